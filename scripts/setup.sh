@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Shared by scripts/run and scripts/test: installs the Debian packages Impetus needs when they are
+# missing (with sudo when not root), then configures and builds the `release` preset.
+# Source it; it defines impetus_setup.
+set -euo pipefail
+
+IMPETUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+# Build tools, the engine's libraries, Qt for the app, and fonts so that text renders offscreen.
+IMPETUS_PACKAGES=(
+  cmake ninja-build g++ pkg-config
+  libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
+  qt6-base-dev libqt6svg6 fonts-dejavu-core
+)
+
+impetus_install_packages() {
+  local missing=()
+  local pkg
+  for pkg in "$@"; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$pkg")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "impetus: installing missing Debian packages: ${missing[*]}"
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null 2>&1; then
+      echo "impetus: these packages are missing and sudo is not available: ${missing[*]}" >&2
+      echo "impetus: install them as root, then run this script again." >&2
+      exit 1
+    fi
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+impetus_setup() {
+  impetus_install_packages "${IMPETUS_PACKAGES[@]}"
+  cd "$IMPETUS_ROOT"
+  cmake --preset release
+  cmake --build --preset release -j "$(nproc)"
+}

@@ -1,0 +1,405 @@
+#include "app/cli.h"
+
+#include "controller/diagnostics.h"
+#include "controller/simulation.h"
+#include "model/scene_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string_view>
+#include <system_error>
+
+namespace impetus::app {
+
+namespace {
+
+/// Simulated time run when neither --time nor --steps is given, s.
+constexpr double kDefaultRunTime = 10.0;
+
+/// Wall time between two updates of the progress line, s.
+constexpr double kProgressInterval = 0.5;
+
+constexpr std::string_view kUsage =
+    "usage:\n"
+    "  impetus-cli run SCENE.json [--time SECONDS | --steps N] [--dt SECONDS]\n"
+    "                             [--integrator euler|semi-implicit-euler|rk4]\n"
+    "                             [--csv FILE] [--sample-every N] [--summary FILE|-]\n"
+    "  impetus-cli validate SCENE.json\n"
+    "\n"
+    "run       steps the scene headless with its fixed time step (default: 10 s of simulated time)\n"
+    "validate  prints 'ok', or every problem in the scene\n"
+    "exit codes: 0 success, 1 failure at run time, 2 bad usage or a bad scene\n";
+
+/// What `run` was asked to do.
+struct RunOptions {
+    std::string scenePath;
+    std::optional<double> time;
+    std::optional<std::int64_t> steps;
+    std::optional<double> dt;
+    std::optional<model::IntegratorKind> integrator;
+    std::optional<std::string> csvPath;
+    std::int64_t sampleEvery = 1;
+    std::optional<std::string> summaryPath;
+};
+
+/// Thrown inside argument parsing only; caught in runCli and turned into exit code 2.
+struct UsageError {
+    std::string message;
+};
+
+/// Shortest text that reads back as the same double (std::to_chars round-trip guarantee).
+std::string formatNumber(double value)
+{
+    std::array<char, 32> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return std::string(buffer.data(), result.ptr);
+}
+
+double parsePositiveSeconds(std::string_view flag, const std::string& text, bool allowZero)
+{
+    double value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc{} || ptr != end || !std::isfinite(value))
+        throw UsageError{std::string(flag) + ": expected a number of seconds, got '" + text + "'"};
+    if (value < 0 || (!allowZero && value == 0))
+        throw UsageError{std::string(flag) + ": must be " + (allowZero ? "zero or more" : "greater than zero") +
+                         ", got " + text};
+    return value;
+}
+
+std::int64_t parseCount(std::string_view flag, const std::string& text, std::int64_t minimum)
+{
+    std::int64_t value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc{} || ptr != end)
+        throw UsageError{std::string(flag) + ": expected a whole number, got '" + text + "'"};
+    if (value < minimum)
+        throw UsageError{std::string(flag) + ": must be at least " + std::to_string(minimum) + ", got " + text};
+    return value;
+}
+
+/// Parses the arguments after `run`. Accepts both "--flag value" and "--flag=value".
+RunOptions parseRunOptions(std::span<const std::string> args)
+{
+    RunOptions options;
+    bool haveScene = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string arg = args[i];
+        std::optional<std::string> inlineValue;
+        if (arg.rfind("--", 0) == 0) {
+            if (const auto eq = arg.find('='); eq != std::string::npos) {
+                inlineValue = arg.substr(eq + 1);
+                arg.resize(eq);
+            }
+        }
+        auto value = [&]() -> std::string {
+            if (inlineValue)
+                return *inlineValue;
+            if (i + 1 >= args.size())
+                throw UsageError{arg + ": needs a value"};
+            return args[++i];
+        };
+
+        if (arg == "--time") {
+            options.time = parsePositiveSeconds(arg, value(), true);
+        } else if (arg == "--steps") {
+            options.steps = parseCount(arg, value(), 0);
+        } else if (arg == "--dt") {
+            options.dt = parsePositiveSeconds(arg, value(), false);
+        } else if (arg == "--integrator") {
+            const std::string name = value();
+            options.integrator = model::integratorFromName(name);
+            if (!options.integrator)
+                throw UsageError{"--integrator: unknown integrator '" + name +
+                                 "' (expected euler, semi-implicit-euler or rk4)"};
+        } else if (arg == "--csv") {
+            options.csvPath = value();
+        } else if (arg == "--sample-every") {
+            options.sampleEvery = parseCount(arg, value(), 1);
+        } else if (arg == "--summary") {
+            options.summaryPath = value();
+        } else if (arg.rfind("--", 0) == 0 || (arg.size() > 1 && arg[0] == '-')) {
+            throw UsageError{"unknown option '" + arg + "'"};
+        } else if (!haveScene) {
+            options.scenePath = arg;
+            haveScene = true;
+        } else {
+            throw UsageError{"unexpected argument '" + arg + "' (only one scene file is run)"};
+        }
+    }
+    if (!haveScene)
+        throw UsageError{"run: no scene file given"};
+    if (options.time && options.steps)
+        throw UsageError{"--time and --steps cannot be used together"};
+    return options;
+}
+
+/// Loads a scene, printing every problem as "FILE: path: reason" on `err`.
+std::optional<model::World> loadScene(const std::string& path, std::ostream& err)
+{
+    model::SceneLoadResult result = model::loadSceneFile(path);
+    if (!result.ok()) {
+        for (const model::SceneProblem& problem : result.problems)
+            err << path << ": " << problem.toString() << '\n';
+        return std::nullopt;
+    }
+    return std::move(*result.world);
+}
+
+/// Quotes a CSV field when it holds a comma, a quote or a line break (RFC 4180).
+std::string csvField(const std::string& text)
+{
+    if (text.find_first_of(",\"\r\n") == std::string::npos)
+        return text;
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"')
+            quoted += '"';
+        quoted += c;
+    }
+    return quoted + '"';
+}
+
+/// One CSV row per body at simulated time `time`.
+void writeCsvRows(std::ostream& csv, const model::World& world, double time)
+{
+    const std::string t = formatNumber(time);
+    for (const model::Body& body : world.bodies) {
+        const model::BodyState& s = body.state;
+        // Collision detection arrives with issue 3; until then no body is ever in contact.
+        const int colliding = 0;
+        csv << t << ',' << csvField(body.name) << ',' << formatNumber(s.position.x()) << ','
+            << formatNumber(s.position.y()) << ',' << formatNumber(s.angle) << ','
+            << formatNumber(s.velocity.x()) << ',' << formatNumber(s.velocity.y()) << ','
+            << formatNumber(s.angularVelocity) << ',' << colliding << '\n';
+    }
+}
+
+/// The name of the first body with a non-finite state, if any.
+std::optional<std::string> firstNonFiniteBody(const model::World& world)
+{
+    for (const model::Body& body : world.bodies) {
+        const model::BodyState& s = body.state;
+        if (!isFinite(s.position) || !isFinite(s.velocity) || !std::isfinite(s.angle) ||
+            !std::isfinite(s.angularVelocity))
+            return body.name;
+    }
+    return std::nullopt;
+}
+
+nlohmann::ordered_json vectorJson(const Vec2& v) { return nlohmann::ordered_json::array({v.x(), v.y()}); }
+
+/// The end-of-run summary in the contract's layout and key order.
+nlohmann::ordered_json makeSummary(const model::World& world, double time, std::int64_t steps)
+{
+    const controller::Energy energy = controller::computeEnergy(world);
+    nlohmann::ordered_json summary;
+    summary["time"] = time;
+    summary["steps"] = steps;
+    summary["collisions"] = 0; // contact-begin events: collision detection arrives with issue 3
+    summary["energy"] = {{"kinetic", energy.kinetic},
+                         {"potential", energy.potential},
+                         {"elastic", energy.elastic},
+                         {"total", energy.total()}};
+    summary["momentum"] = vectorJson(controller::linearMomentum(world));
+    summary["angularMomentum"] = controller::angularMomentum(world);
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const model::Body& body : world.bodies) {
+        nlohmann::ordered_json b;
+        b["name"] = body.name;
+        b["position"] = vectorJson(body.state.position);
+        b["angle"] = body.state.angle;
+        b["velocity"] = vectorJson(body.state.velocity);
+        b["angularVelocity"] = body.state.angularVelocity;
+        b["mass"] = body.mass;
+        b["inertia"] = body.inertia;
+        b["collisions"] = 0;
+        b["colliding"] = false;
+        b["ellipses"] = 0; // soft mode's ellipse grid arrives with issue 5
+        bodies.push_back(std::move(b));
+    }
+    summary["bodies"] = std::move(bodies);
+    return summary;
+}
+
+/// Prints "step k of n (p%)" on one rewritten terminal line, at most every kProgressInterval.
+class ProgressLine {
+public:
+    ProgressLine(std::ostream& err, bool enabled, std::int64_t total)
+        : m_err(err), m_enabled(enabled && total > 0), m_total(total), m_last(Clock::now())
+    {
+    }
+
+    void update(std::int64_t done)
+    {
+        if (!m_enabled)
+            return;
+        const Clock::time_point now = Clock::now();
+        if (std::chrono::duration<double>(now - m_last).count() < kProgressInterval)
+            return;
+        m_last = now;
+        m_shown = true;
+        m_err << "\rstep " << done << " of " << m_total << " ("
+              << (100 * done) / m_total << "%)" << std::flush;
+    }
+
+    ~ProgressLine()
+    {
+        if (m_shown)
+            m_err << "\r\033[K" << std::flush;
+    }
+
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::ostream& m_err;
+    bool m_enabled;
+    bool m_shown = false;
+    std::int64_t m_total;
+    Clock::time_point m_last;
+};
+
+int commandValidate(std::span<const std::string> args, std::ostream& out, std::ostream& err)
+{
+    if (args.size() != 1) {
+        err << "impetus-cli validate: expected exactly one scene file\n\n" << kUsage;
+        return kExitBadInput;
+    }
+    if (!loadScene(args[0], err))
+        return kExitBadInput;
+    out << "ok\n";
+    return kExitOk;
+}
+
+int commandRun(std::span<const std::string> args, std::ostream& out, std::ostream& err, bool errIsTerminal)
+{
+    RunOptions options;
+    try {
+        options = parseRunOptions(args);
+    } catch (const UsageError& e) {
+        err << "impetus-cli run: " << e.message << "\n\n" << kUsage;
+        return kExitBadInput;
+    }
+
+    std::optional<model::World> loaded = loadScene(options.scenePath, err);
+    if (!loaded)
+        return kExitBadInput;
+    model::World world = std::move(*loaded);
+    if (options.dt)
+        world.settings.timeStep = *options.dt;
+    if (options.integrator)
+        world.settings.integrator = *options.integrator;
+    const double dt = world.settings.timeStep;
+
+    // --time is rounded to the nearest whole number of fixed steps; the summary reports the time
+    // actually simulated, steps × dt.
+    std::int64_t totalSteps = 0;
+    if (options.steps) {
+        totalSteps = *options.steps;
+    } else {
+        const double requested = options.time.value_or(kDefaultRunTime);
+        const double count = std::round(requested / dt);
+        if (!(count < 9.0e15)) {
+            err << "impetus-cli run: " << formatNumber(requested) << " s at dt = " << formatNumber(dt)
+                << " s is too many steps\n";
+            return kExitBadInput;
+        }
+        totalSteps = static_cast<std::int64_t>(count);
+    }
+
+    std::ofstream csv;
+    if (options.csvPath) {
+        csv.open(*options.csvPath, std::ios::out | std::ios::trunc);
+        if (!csv) {
+            err << "impetus-cli run: cannot write the CSV file '" << *options.csvPath << "'\n";
+            return kExitRuntimeFailure;
+        }
+        csv << "time,body,x,y,angle,vx,vy,angularVelocity,colliding\n";
+        writeCsvRows(csv, world, 0.0);
+    }
+
+    controller::Simulation simulation;
+    {
+        ProgressLine progress(err, errIsTerminal, totalSteps);
+        for (std::int64_t step = 1; step <= totalSteps; ++step) {
+            simulation.step(world);
+            const double time = static_cast<double>(step) * dt;
+            if (const std::optional<std::string> bad = firstNonFiniteBody(world)) {
+                err << "impetus-cli run: body '" << *bad << "' has a non-finite state at t = "
+                    << formatNumber(time) << " s (step " << step << ")\n";
+                return kExitRuntimeFailure;
+            }
+            if (csv.is_open() && step % options.sampleEvery == 0)
+                writeCsvRows(csv, world, time);
+            progress.update(step);
+        }
+    }
+
+    if (csv.is_open()) {
+        csv.flush();
+        if (!csv) {
+            err << "impetus-cli run: writing the CSV file '" << *options.csvPath << "' failed\n";
+            return kExitRuntimeFailure;
+        }
+    }
+
+    const double simulatedTime = static_cast<double>(totalSteps) * dt;
+    const nlohmann::ordered_json summary = makeSummary(world, simulatedTime, totalSteps);
+    if (options.summaryPath && *options.summaryPath == "-") {
+        out << summary.dump(2) << '\n';
+    } else {
+        if (options.summaryPath) {
+            std::ofstream file(*options.summaryPath, std::ios::out | std::ios::trunc);
+            file << summary.dump(2) << '\n';
+            file.flush();
+            if (!file) {
+                err << "impetus-cli run: cannot write the summary file '" << *options.summaryPath << "'\n";
+                return kExitRuntimeFailure;
+            }
+        }
+        out << "ran " << totalSteps << " steps (" << formatNumber(simulatedTime) << " s) with "
+            << model::integratorName(world.settings.integrator) << ", dt = " << formatNumber(dt) << " s\n";
+    }
+    return kExitOk;
+}
+
+} // namespace
+
+int runCli(std::span<const std::string> args, std::ostream& out, std::ostream& err, bool errIsTerminal)
+{
+    try {
+        if (args.empty()) {
+            err << kUsage;
+            return kExitBadInput;
+        }
+        const std::string& command = args[0];
+        if (command == "--help" || command == "-h" || command == "help") {
+            out << kUsage;
+            return kExitOk;
+        }
+        if (command == "run")
+            return commandRun(args.subspan(1), out, err, errIsTerminal);
+        if (command == "validate")
+            return commandValidate(args.subspan(1), out, err);
+        err << "impetus-cli: unknown command '" << command << "'\n\n" << kUsage;
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        // Nothing above should throw; if something does (out of memory), fail cleanly.
+        err << "impetus-cli: " << e.what() << '\n';
+        return kExitRuntimeFailure;
+    }
+}
+
+} // namespace impetus::app

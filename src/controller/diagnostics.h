@@ -1,0 +1,34 @@
+#pragma once
+/// \file diagnostics.h
+/// Conserved and monitored quantities of a world: energy, linear and angular momentum.
+/// Fixed bodies are excluded: they have infinite mass, are at rest, and their potential energy is
+/// a constant that would only hide the changes a student is looking for.
+
+#include "model/scalar.h"
+#include "model/world.h"
+
+namespace impetus::controller {
+
+/// Energy of a world, J.
+struct Energy {
+    /// Σ ½mv² + ½Iω² over dynamic bodies.
+    Scalar kinetic = 0;
+    /// Gravitational, from y = 0 (the origin in general): Σ −m·(g · x) over dynamic bodies, which
+    /// is m·g·y for the default downward gravity.
+    Scalar potential = 0;
+    /// Σ ½k(L − L₀)² over springs.
+    Scalar elastic = 0;
+    /// kinetic + potential + elastic.
+    Scalar total() const { return kinetic + potential + elastic; }
+};
+
+/// The energy of `world` in its current state.
+Energy computeEnergy(const model::World& world);
+
+/// Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
+Vec2 linearMomentum(const model::World& world);
+
+/// Total angular momentum about the world origin, Σ (I·ω + m·(x × v)) over dynamic bodies, kg·m²/s.
+Scalar angularMomentum(const model::World& world);
+
+} // namespace impetus::controller

@@ -1,0 +1,69 @@
+#pragma once
+/// \file integrator.h
+/// Time integrators over the whole world state: every body's position, angle, velocity and
+/// angular velocity advance together, so bodies joined by springs integrate as one coupled system.
+
+#include "controller/force_model.h"
+#include "model/scalar.h"
+#include "model/world.h"
+
+#include <memory>
+#include <vector>
+
+namespace impetus::controller {
+
+/// Advances the bodies of a world by one step h under the forces of computeDerivatives().
+/// Implementations keep scratch buffers, so one instance serves one simulation at a time.
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    /// Advances every body's state in `world` by h seconds. Fixed bodies do not move.
+    virtual void integrate(model::World& world, Scalar h) = 0;
+
+    /// Which method this is.
+    virtual model::IntegratorKind kind() const = 0;
+};
+
+/// Explicit (forward) Euler: x ← x + h·v, v ← v + h·a(x, v), both from the old state. First order;
+/// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step.
+class ExplicitEulerIntegrator final : public Integrator {
+public:
+    void integrate(model::World& world, Scalar h) override;
+    model::IntegratorKind kind() const override { return model::IntegratorKind::Euler; }
+
+private:
+    std::vector<model::BodyState> m_states;
+    std::vector<BodyDerivative> m_derivatives;
+};
+
+/// Semi-implicit (symplectic) Euler: v ← v + h·a(x, v), then x ← x + h·v with the new velocity.
+/// First order, but its energy error stays bounded on conservative systems.
+class SemiImplicitEulerIntegrator final : public Integrator {
+public:
+    void integrate(model::World& world, Scalar h) override;
+    model::IntegratorKind kind() const override { return model::IntegratorKind::SemiImplicitEuler; }
+
+private:
+    std::vector<model::BodyState> m_states;
+    std::vector<BodyDerivative> m_derivatives;
+};
+
+/// Classical fourth-order Runge–Kutta: four derivative evaluations k₁…k₄ at t, t+h/2, t+h/2 and
+/// t+h, combined as y ← y + h/6·(k₁ + 2k₂ + 2k₃ + k₄). Fourth order: halving h divides the error
+/// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile).
+class Rk4Integrator final : public Integrator {
+public:
+    void integrate(model::World& world, Scalar h) override;
+    model::IntegratorKind kind() const override { return model::IntegratorKind::Rk4; }
+
+private:
+    std::vector<model::BodyState> m_start;
+    std::vector<model::BodyState> m_stage;
+    std::vector<BodyDerivative> m_k1, m_k2, m_k3, m_k4;
+};
+
+/// A new integrator of the given kind.
+std::unique_ptr<Integrator> makeIntegrator(model::IntegratorKind kind);
+
+} // namespace impetus::controller

@@ -1,0 +1,112 @@
+#pragma once
+/// \file body.h
+/// A rigid (or soft) body: what the user defined, its state, and the mass properties and
+/// geometry derived from them.
+
+#include "model/color.h"
+#include "model/scalar.h"
+#include "model/shape.h"
+
+#include <compare>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impetus::model {
+
+/// A strong index into World::bodies. Springs and joints refer to bodies by id, never by pointer,
+/// so a World copies with `=`.
+struct BodyId {
+    std::uint32_t index = 0;
+    auto operator<=>(const BodyId&) const = default;
+};
+
+/// Surface material. Mixing two materials in a contact is the contact solver's business.
+struct Material {
+    Scalar restitution = 0.5; ///< coefficient of restitution e, 0 (plastic) … 1 (elastic)
+    Scalar friction = 0.5; ///< Coulomb friction coefficient μ ≥ 0 (0.5: wood on wood)
+    bool operator==(const Material&) const = default;
+};
+
+/// Whether the user gave the body's areal density or its total mass. The other follows from the
+/// area. Kept so that the editor and a saved file show what the user chose.
+enum class MassMode { Density, Mass };
+
+/// The user's mass choice: `value` is a density in kg/m² (MassMode::Density) or a mass in kg.
+struct MassSpec {
+    MassMode mode = MassMode::Density;
+    Scalar value = 1.0; ///< kg/m² or kg, > 0
+    bool operator==(const MassSpec&) const = default;
+};
+
+/// Soft-mode settings (scene key `soft`). The body is then simulated as a grid of small ellipses
+/// joined by springs; see docs/physics.md.
+struct SoftSettings {
+    bool autoDensity = false; ///< true: pick ellipsesPerSquareMeter from this machine's speed
+    Scalar ellipsesPerSquareMeter = 64; ///< grid density n, 1/m² (cell side 1/√n); typical 64–1024
+    Scalar stiffness = 2000; ///< spring constant of the grid springs, N/m
+    Scalar damping = 1.0; ///< damping of the grid springs along their length, N·s/m
+    bool operator==(const SoftSettings&) const = default;
+};
+
+/// The kinematic state of a body.
+struct BodyState {
+    Vec2 position = Vec2::Zero(); ///< world position of the centre of mass, m
+    Scalar angle = 0; ///< rad, counter-clockwise
+    Vec2 velocity = Vec2::Zero(); ///< velocity of the centre of mass, m/s
+    Scalar angularVelocity = 0; ///< rad/s, counter-clockwise
+    bool operator==(const BodyState&) const = default;
+};
+
+/// Geometry derived from the shape, in the body frame whose origin is the centre of mass.
+struct BodyGeometry {
+    /// Where the body-frame origin (the centroid) lies in the user's shape frame: the polygon's
+    /// centroid, or zero for the symmetric shapes. Local point = user point − centroidOffset.
+    Vec2 centroidOffset = Vec2::Zero();
+    /// Outline of a box or polygon, counter-clockwise, in the body frame. Empty for round shapes.
+    std::vector<Vec2> outline;
+    /// Convex pieces of a box or polygon (one piece when convex), counter-clockwise, body frame.
+    std::vector<std::vector<Vec2>> convexPieces;
+    /// Radius of the smallest origin-centred circle that holds the shape, m.
+    Scalar boundingRadius = 0;
+    bool operator==(const BodyGeometry&) const = default;
+};
+
+/// A body. The fields up to `soft` are the user's definition; call updateDerived() after changing
+/// `shape`, `massSpec` or `fixed` so that the derived fields below follow.
+struct Body {
+    std::string name; ///< unique within the world, non-empty
+    Shape shape = Circle{};
+    BodyState state;
+    MassSpec massSpec;
+    Material material;
+    bool fixed = false; ///< a fixed body never moves and feels no force (infinite mass)
+    Color color;
+    std::optional<SoftSettings> soft; ///< present: soft mode
+
+    // Derived by updateDerived().
+    Scalar area = 0; ///< m²
+    Scalar mass = 0; ///< kg, from the geometry (reported even for fixed bodies)
+    Scalar inertia = 0; ///< moment of inertia about the centre of mass, kg·m²
+    Scalar invMass = 0; ///< 1/mass, or 0 for a fixed body, 1/kg
+    Scalar invInertia = 0; ///< 1/inertia, or 0 for a fixed body, 1/(kg·m²)
+    BodyGeometry geometry;
+
+    bool operator==(const Body&) const = default;
+
+    /// Recomputes area, mass, inertia, their inverses and the geometry from shape, massSpec and
+    /// fixed. Precondition: the shape is valid (positive sizes, a simple polygon).
+    void updateDerived();
+
+    /// Areal density, kg/m², whichever way the mass was given.
+    Scalar density() const;
+
+    /// A body-frame point (m) in world coordinates: position + R(angle)·local.
+    Vec2 worldPoint(const Vec2& local) const;
+
+    /// The world velocity (m/s) of the body's material point at world position `world`: v + ω × r.
+    Vec2 velocityAt(const Vec2& world) const;
+};
+
+} // namespace impetus::model

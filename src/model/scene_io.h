@@ -1,0 +1,54 @@
+#pragma once
+/// \file scene_io.h
+/// Reading and writing scene files, format "impetus-scene" version 1 (see docs/scene-format.md
+/// and the public contract). Reading validates every rule and reports every problem at once.
+
+#include "model/world.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impetus::model {
+
+/// The scene-file version this build reads and writes.
+inline constexpr int kSceneFormatVersion = 1;
+
+/// The value of the scene key `format`.
+inline constexpr std::string_view kSceneFormatName = "impetus-scene";
+
+/// One problem in a scene: the JSON path (e.g. "bodies[2].shape.vertices", or "(root)" for the
+/// document itself) and the reason. toString() gives "path: reason".
+struct SceneProblem {
+    std::string path;
+    std::string reason;
+    std::string toString() const { return path + ": " + reason; }
+    bool operator==(const SceneProblem&) const = default;
+};
+
+/// The outcome of reading a scene: a complete world, or no world and every problem found.
+/// Never a partial world.
+struct SceneLoadResult {
+    std::optional<World> world;
+    std::vector<SceneProblem> problems;
+    bool ok() const { return world.has_value(); }
+};
+
+/// Parses and validates scene JSON text. Every body's derived data is computed (Body::updateDerived),
+/// spring rest lengths and joint anchors/lengths are filled in from the load-time poses.
+SceneLoadResult parseScene(std::string_view jsonText);
+
+/// Reads a scene file; a file that cannot be read is one problem with path "(file)".
+SceneLoadResult loadSceneFile(const std::filesystem::path& path);
+
+/// The scene as JSON text (2-space indent, trailing newline), every key written explicitly.
+/// parseScene(serializeScene(w)) gives a world equal to w (time and step count reset to 0).
+std::string serializeScene(const World& world);
+
+/// Writes the scene atomically: to a temporary file in the same folder, then renamed over `path`,
+/// so a failure never leaves a half-written or lost file. Returns an error message on failure.
+std::optional<std::string> saveSceneFile(const std::filesystem::path& path, const World& world);
+
+} // namespace impetus::model

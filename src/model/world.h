@@ -1,0 +1,60 @@
+#pragma once
+/// \file world.h
+/// Everything a scene holds: settings, bodies, springs and joints. A plain value: copy it with `=`
+/// to reset, undo or compare runs.
+
+#include "model/body.h"
+#include "model/constants.h"
+#include "model/joint.h"
+#include "model/scalar.h"
+#include "model/spring.h"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace impetus::model {
+
+/// The three integrators of scene key `world.integrator`.
+enum class IntegratorKind {
+    Euler, ///< "euler": explicit (forward) Euler, first order
+    SemiImplicitEuler, ///< "semi-implicit-euler": symplectic Euler, first order, bounded energy
+    Rk4, ///< "rk4": classical fourth-order Runge–Kutta
+};
+
+/// The scene-file name of an integrator ("euler", "semi-implicit-euler", "rk4").
+std::string_view integratorName(IntegratorKind kind);
+
+/// Parses a scene-file integrator name; nullopt when unknown.
+std::optional<IntegratorKind> integratorFromName(std::string_view name);
+
+/// World settings (scene key `world`).
+struct WorldSettings {
+    Vec2 gravity = Vec2(0, -constants::kStandardGravity); ///< m/s²
+    IntegratorKind integrator = IntegratorKind::Rk4;
+    Scalar timeStep = constants::kDefaultTimeStep; ///< the fixed step h, s (1/240 s)
+    Scalar drag = 0; ///< Stokes coefficient b in F = −b·v on every dynamic body, N·s/m
+    bool operator==(const WorldSettings&) const = default;
+};
+
+/// A whole scene and its simulated time.
+struct World {
+    WorldSettings settings;
+    std::vector<Body> bodies;
+    std::vector<Spring> springs;
+    std::vector<Joint> joints;
+    Scalar time = 0; ///< simulated time since the scene was loaded, s
+    std::int64_t stepCount = 0; ///< fixed steps taken since the scene was loaded
+
+    bool operator==(const World&) const = default;
+
+    /// The id of the body called `name`, if any.
+    std::optional<BodyId> findBody(std::string_view name) const;
+
+    /// The body with id `id`. Precondition: id.index < bodies.size().
+    Body& body(BodyId id) { return bodies[id.index]; }
+    const Body& body(BodyId id) const { return bodies[id.index]; }
+};
+
+} // namespace impetus::model

@@ -1,0 +1,288 @@
+// impetus-cli end to end, as a teacher's script would use it: the real binary, its summary JSON,
+// its CSV and its exit codes (public contract, section 2).
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string readFile(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string quoted(const std::string& arg)
+{
+    std::string q = "'";
+    for (const char c : arg) {
+        if (c == '\'')
+            q += "'\\''";
+        else
+            q += c;
+    }
+    return q + "'";
+}
+
+std::string dataFile(const std::string& name) { return std::string(IMPETUS_CLI_DATA_DIR) + "/" + name; }
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        m_dir = fs::temp_directory_path() / (std::string("impetus-cli-test-") + info->name());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    fs::path tempPath(const std::string& name) const { return m_dir / name; }
+
+    /// Runs impetus-cli with `args`, capturing stdout, stderr and the exit code.
+    CliResult run(const std::vector<std::string>& args) const
+    {
+        std::string command = quoted(IMPETUS_CLI_PATH);
+        for (const std::string& arg : args) {
+            command += ' ';
+            command += quoted(arg);
+        }
+        const fs::path out = m_dir / "stdout.txt";
+        const fs::path err = m_dir / "stderr.txt";
+        command += " > " + quoted(out.string()) + " 2> " + quoted(err.string());
+        const int status = std::system(command.c_str());
+        CliResult result;
+        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        result.out = readFile(out);
+        result.err = readFile(err);
+        return result;
+    }
+
+private:
+    fs::path m_dir;
+};
+
+TEST_F(Cli, ValidatePrintsOkForAGoodScene)
+{
+    const CliResult r = run({"validate", dataFile("projectile.json")});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "ok\n");
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, ValidateListsEveryProblemAndExitsTwo)
+{
+    const CliResult r = run({"validate", dataFile("bad.json")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_NE(r.err.find("world.timeStep"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bodies[1].name"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("colour"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, MissingSceneFileIsABadSceneExitTwo)
+{
+    const CliResult r = run({"validate", tempPath("nowhere.json").string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("nowhere.json"), std::string::npos) << r.err;
+}
+
+// The summary parses as JSON with the contract's keys, and the physics in it is right: RK4 moves
+// a projectile exactly, so after 1 s the ball is at x₀ + v₀t + ½gt².
+TEST_F(Cli, SummaryParsesAndMatchesTheProjectile)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "100", "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(s["time"].get<double>(), 1.0, 1e-12);
+    EXPECT_EQ(s["steps"].get<int>(), 100);
+    EXPECT_EQ(s["collisions"].get<int>(), 0);
+    for (const char* key : {"kinetic", "potential", "elastic", "total"})
+        EXPECT_TRUE(s["energy"][key].is_number()) << key;
+    EXPECT_EQ(s["momentum"].size(), 2u);
+    EXPECT_TRUE(s["angularMomentum"].is_number());
+    ASSERT_EQ(s["bodies"].size(), 2u);
+
+    const nlohmann::json& ball = s["bodies"][0];
+    EXPECT_EQ(ball["name"], "ball");
+    EXPECT_NEAR(ball["position"][0].get<double>(), 3.0, 1e-12);
+    EXPECT_NEAR(ball["position"][1].get<double>(), 1 + 4 - 0.5 * 9.81, 1e-12);
+    EXPECT_NEAR(ball["velocity"][1].get<double>(), 4 - 9.81, 1e-12);
+    EXPECT_NEAR(ball["mass"].get<double>(), 0.5, 1e-15);
+    EXPECT_NEAR(ball["inertia"].get<double>(), 0.5 * 0.5 * 0.01, 1e-15);
+    for (const char* key : {"angle", "angularVelocity", "collisions", "colliding", "ellipses"})
+        EXPECT_TRUE(ball.contains(key)) << key;
+    EXPECT_EQ(ball["colliding"], false);
+    EXPECT_EQ(ball["ellipses"], 0);
+
+    // Energy: ½mv² + mgy, with the fixed ground left out.
+    const double vy = 4 - 9.81;
+    const double y = 1 + 4 - 0.5 * 9.81;
+    EXPECT_NEAR(s["energy"]["kinetic"].get<double>(), 0.5 * 0.5 * (9 + vy * vy), 1e-9);
+    EXPECT_NEAR(s["energy"]["potential"].get<double>(), 0.5 * 9.81 * y, 1e-9);
+    EXPECT_NEAR(s["energy"]["total"].get<double>(), 0.5 * 0.5 * 25 + 0.5 * 9.81 * 1, 1e-9);
+    EXPECT_NEAR(s["momentum"][0].get<double>(), 1.5, 1e-12);
+}
+
+TEST_F(Cli, SummaryKeysComeInTheContractsOrder)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto s = nlohmann::ordered_json::parse(r.out);
+    std::vector<std::string> keys;
+    for (const auto& item : s.items())
+        keys.push_back(item.key());
+    EXPECT_EQ(keys, (std::vector<std::string>{"time", "steps", "collisions", "energy", "momentum",
+                                              "angularMomentum", "bodies"}));
+}
+
+TEST_F(Cli, SummaryToAFile)
+{
+    const fs::path summary = tempPath("summary.json");
+    const CliResult r = run({"run", dataFile("projectile.json"), "--time", "0.5", "--summary", summary.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(readFile(summary));
+    EXPECT_EQ(s["steps"].get<int>(), 50); // 0.5 s at the scene's dt = 0.01 s
+    EXPECT_NE(r.out.find("ran 50 steps"), std::string::npos) << r.out;
+}
+
+// One row per body per sample, at step 0 and every N steps, with the contract's columns.
+TEST_F(Cli, CsvHasTheContractsColumnsAndOneRowPerBodyPerSample)
+{
+    const fs::path csv = tempPath("out.csv");
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "20", "--sample-every", "5",
+                             "--csv", csv.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(readFile(csv));
+    std::string header;
+    std::getline(lines, header);
+    EXPECT_EQ(header, "time,body,x,y,angle,vx,vy,angularVelocity,colliding");
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(lines, line);) {
+        std::vector<std::string> cells;
+        std::istringstream cellStream(line);
+        for (std::string cell; std::getline(cellStream, cell, ',');)
+            cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    ASSERT_EQ(rows.size(), 2u * 5u); // 2 bodies × samples at steps 0, 5, 10, 15, 20
+    for (const auto& row : rows)
+        ASSERT_EQ(row.size(), 9u);
+    EXPECT_EQ(rows[0][1], "ball");
+    EXPECT_EQ(rows[1][1], "ground");
+    EXPECT_DOUBLE_EQ(std::stod(rows[0][0]), 0.0);
+    EXPECT_DOUBLE_EQ(std::stod(rows[0][3]), 1.0);
+    EXPECT_NEAR(std::stod(rows[2][0]), 0.05, 1e-12);
+    EXPECT_NEAR(std::stod(rows[8][0]), 0.2, 1e-12);
+    EXPECT_NEAR(std::stod(rows[8][2]), 0.6, 1e-12); // x = 3 m/s · 0.2 s
+    EXPECT_EQ(rows[8][8], "0");
+}
+
+TEST_F(Cli, CsvQuotesNamesWithCommasAndQuotes)
+{
+    const fs::path csv = tempPath("out.csv");
+    const CliResult r = run({"run", dataFile("comma,name.json"), "--steps", "1", "--csv", csv.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(csv).find(",\"cart, \"\"red\"\"\",") , std::string::npos) << readFile(csv);
+}
+
+// Flags override the scene: explicit Euler with dt = 0.1 leaves a dropped ball's height after one
+// step unchanged (x += h·v with v₀ = 0 vertically), unlike RK4.
+TEST_F(Cli, FlagsOverrideTheScenesIntegratorAndStep)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps=1", "--dt=0.1", "--integrator",
+                             "euler", "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(s["time"].get<double>(), 0.1, 1e-15);
+    EXPECT_NEAR(s["bodies"][0]["position"][1].get<double>(), 1 + 0.4, 1e-12);
+    EXPECT_NEAR(s["bodies"][0]["velocity"][1].get<double>(), 4 - 0.981, 1e-12);
+}
+
+TEST_F(Cli, NonFiniteStateStopsWithExitOneNamingBodyAndTime)
+{
+    const CliResult r = run({"run", dataFile("explodes.json"), "--steps", "5000"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("'bob'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("non-finite"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("t = "), std::string::npos) << r.err;
+}
+
+struct UsageCase {
+    const char* name;
+    std::vector<std::string> args;
+    const char* message;
+};
+
+void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.name; }
+
+class CliUsage : public Cli, public ::testing::WithParamInterface<UsageCase> {};
+
+TEST_P(CliUsage, BadUsageExitsTwoWithAMessage)
+{
+    std::vector<std::string> args = GetParam().args;
+    for (std::string& arg : args) {
+        if (arg == "SCENE")
+            arg = dataFile("projectile.json");
+    }
+    const CliResult r = run(args);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliUsage,
+    ::testing::Values(UsageCase{"no_arguments", {}, "usage"},
+                      UsageCase{"unknown_command", {"fly", "SCENE"}, "unknown command 'fly'"},
+                      UsageCase{"no_scene", {"run"}, "no scene file"},
+                      UsageCase{"unknown_option", {"run", "SCENE", "--speed", "2"}, "unknown option '--speed'"},
+                      UsageCase{"time_and_steps", {"run", "SCENE", "--time", "1", "--steps", "3"}, "cannot be used together"},
+                      UsageCase{"zero_dt", {"run", "SCENE", "--dt", "0"}, "--dt: must be greater than zero"},
+                      UsageCase{"nan_dt", {"run", "SCENE", "--dt", "nan"}, "--dt: expected a number"},
+                      UsageCase{"negative_time", {"run", "SCENE", "--time", "-1"}, "--time: must be zero or more"},
+                      UsageCase{"fractional_steps", {"run", "SCENE", "--steps", "2.5"}, "--steps: expected a whole number"},
+                      UsageCase{"zero_sample_every", {"run", "SCENE", "--sample-every", "0"}, "--sample-every: must be at least 1"},
+                      UsageCase{"unknown_integrator", {"run", "SCENE", "--integrator", "verlet"}, "unknown integrator 'verlet'"},
+                      UsageCase{"missing_value", {"run", "SCENE", "--csv"}, "--csv: needs a value"},
+                      UsageCase{"two_scenes", {"run", "SCENE", "SCENE"}, "unexpected argument"},
+                      UsageCase{"bad_scene", {"run", IMPETUS_CLI_DATA_DIR "/bad.json"}, "world.timeStep"},
+                      UsageCase{"validate_two_files", {"validate", "SCENE", "SCENE"}, "exactly one scene file"}),
+    [](const ::testing::TestParamInfo<UsageCase>& p) { return std::string(p.param.name); });
+
+TEST_F(Cli, UnwritableCsvIsARuntimeFailure)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--csv",
+                             tempPath("no-such-dir/out.csv").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("cannot write the CSV file"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, HelpExitsZero)
+{
+    const CliResult r = run({"--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("impetus-cli run SCENE.json"), std::string::npos);
+}
+
+} // namespace

@@ -1,0 +1,239 @@
+// The integrators against analytic solutions: the projectile, the harmonic oscillator (error order
+// and energy behaviour of each method) and a two-body spring system (coupled integration).
+
+#include "controller/diagnostics.h"
+#include "controller/integrator.h"
+#include "controller/simulation.h"
+#include "support/world_builders.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace impetus::controller {
+namespace {
+
+using model::IntegratorKind;
+using testing::makeBall;
+using testing::makeEmptyWorld;
+using testing::makeOscillator;
+
+constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
+
+/// Runs `steps` fixed steps of `world`.
+void run(model::World& world, int steps)
+{
+    Simulation simulation;
+    for (int i = 0; i < steps; ++i)
+        simulation.step(world);
+}
+
+// A projectile's position is quadratic in t, which every stage of RK4 integrates exactly: after
+// 2 s the position matches x₀ + v₀t + ½gt² to rounding, for any step.
+TEST(Rk4, IsExactForAProjectile)
+{
+    const Vec2 g(0, -9.81);
+    const Vec2 x0(-1.5, 2.0);
+    const Vec2 v0(3.0, 7.5);
+    for (const Scalar h : {1.0 / 240.0, 1.0 / 30.0, 0.25}) {
+        model::World world = makeEmptyWorld(IntegratorKind::Rk4, h, g);
+        world.bodies.push_back(makeBall("ball", 0.3, 0.1, x0, v0));
+        world.bodies[0].state.angularVelocity = 1.25;
+        const int steps = static_cast<int>(std::lround(2.0 / h));
+        run(world, steps);
+
+        const Scalar t = steps * h;
+        const Vec2 expected = x0 + v0 * t + 0.5 * g * t * t;
+        const model::BodyState& s = world.bodies[0].state;
+        EXPECT_NEAR(s.position.x(), expected.x(), 1e-12) << "h = " << h;
+        EXPECT_NEAR(s.position.y(), expected.y(), 1e-12) << "h = " << h;
+        EXPECT_NEAR(s.velocity.y(), v0.y() + g.y() * t, 1e-12) << "h = " << h;
+        EXPECT_NEAR(s.angle, 1.25 * t, 1e-12) << "h = " << h;
+    }
+}
+
+/// Largest |x(t) − A·cos(ωt)| over [0, duration] on the oscillator of makeOscillator.
+Scalar oscillatorMaxError(IntegratorKind kind, Scalar h, Scalar duration)
+{
+    const Scalar mass = 2.0;
+    const Scalar omega = 2 * kPi; // one period per second
+    const Scalar amplitude = 0.5;
+    model::World world = makeOscillator(kind, h, mass, mass * omega * omega, amplitude);
+    Simulation simulation;
+    Scalar maxError = 0;
+    const int steps = static_cast<int>(std::lround(duration / h));
+    for (int i = 1; i <= steps; ++i) {
+        simulation.step(world);
+        const Scalar t = i * h;
+        const Vec2 exact(amplitude * std::cos(omega * t), 0);
+        maxError = std::max(maxError, (world.bodies[0].state.position - exact).norm());
+    }
+    return maxError;
+}
+
+// Halving h divides a p-th order method's error by 2ᵖ: about 16 for RK4.
+TEST(HarmonicOscillator, Rk4ErrorRatioShowsFourthOrder)
+{
+    const Scalar coarse = oscillatorMaxError(IntegratorKind::Rk4, 0.01, 2.0);
+    const Scalar fine = oscillatorMaxError(IntegratorKind::Rk4, 0.005, 2.0);
+    const Scalar ratio = coarse / fine;
+    RecordProperty("rk4_error_ratio", std::to_string(ratio));
+    std::cout << "RK4 max error h=0.01: " << coarse << ", h=0.005: " << fine << ", ratio " << ratio << '\n';
+    EXPECT_GE(ratio, 14.0);
+    EXPECT_LE(ratio, 18.0);
+}
+
+// And by about 2 for explicit Euler (first order). The steps are small enough that the error is in
+// its asymptotic regime (the amplitude has grown by only ~4% over the run).
+TEST(HarmonicOscillator, EulerErrorRatioShowsFirstOrder)
+{
+    const Scalar coarse = oscillatorMaxError(IntegratorKind::Euler, 0.001, 2.0);
+    const Scalar fine = oscillatorMaxError(IntegratorKind::Euler, 0.0005, 2.0);
+    const Scalar ratio = coarse / fine;
+    RecordProperty("euler_error_ratio", std::to_string(ratio));
+    std::cout << "Euler max error h=0.001: " << coarse << ", h=0.0005: " << fine << ", ratio " << ratio << '\n';
+    EXPECT_GE(ratio, 1.9);
+    EXPECT_LE(ratio, 2.1);
+}
+
+// Semi-implicit Euler is first order too.
+TEST(HarmonicOscillator, SemiImplicitEulerErrorRatioShowsFirstOrder)
+{
+    const Scalar coarse = oscillatorMaxError(IntegratorKind::SemiImplicitEuler, 0.001, 2.0);
+    const Scalar fine = oscillatorMaxError(IntegratorKind::SemiImplicitEuler, 0.0005, 2.0);
+    const Scalar ratio = coarse / fine;
+    std::cout << "Semi-implicit Euler ratio " << ratio << '\n';
+    EXPECT_GE(ratio, 1.9);
+    EXPECT_LE(ratio, 2.1);
+}
+
+// Explicit Euler on x'' = −ω²x multiplies the energy by exactly (1 + ω²h²) each step:
+// E' = ½m[(v − hω²x)² + ω²(x + hv)²] = (1 + ω²h²)·½m(v² + ω²x²).
+TEST(HarmonicOscillator, ExplicitEulerEnergyGrowsAsOnePlusOmegaSquaredHSquaredToTheN)
+{
+    const Scalar mass = 1.5;
+    const Scalar omega = 3.0;
+    const Scalar h = 0.01;
+    model::World world = makeOscillator(IntegratorKind::Euler, h, mass, mass * omega * omega, 0.4);
+    const Scalar e0 = computeEnergy(world).total();
+    Simulation simulation;
+    for (int n = 1; n <= 1000; ++n) {
+        simulation.step(world);
+        if (n % 250 == 0) {
+            const Scalar expected = e0 * std::pow(1 + omega * omega * h * h, n);
+            EXPECT_NEAR(computeEnergy(world).total() / expected, 1.0, 1e-10) << "after " << n << " steps";
+        }
+    }
+    // And it really has grown: by (1.0009)^1000 ≈ 2.46.
+    EXPECT_GT(computeEnergy(world).total(), 2.4 * e0);
+}
+
+// Semi-implicit Euler is symplectic: over 100 periods its energy oscillates within O(ωh) of the
+// true value and does not drift.
+TEST(HarmonicOscillator, SemiImplicitEulerKeepsEnergyBounded)
+{
+    const Scalar mass = 1.0;
+    const Scalar omega = 2 * kPi;
+    const Scalar h = 0.01;
+    model::World world = makeOscillator(IntegratorKind::SemiImplicitEuler, h, mass, mass * omega * omega, 1.0);
+    const Scalar e0 = computeEnergy(world).total();
+    Simulation simulation;
+    Scalar maxDeviation = 0;
+    Scalar firstPeriodMax = 0;
+    Scalar lastPeriodMax = 0;
+    const int stepsPerPeriod = 100;
+    const int periods = 100;
+    for (int n = 1; n <= stepsPerPeriod * periods; ++n) {
+        simulation.step(world);
+        const Scalar deviation = std::abs(computeEnergy(world).total() / e0 - 1);
+        maxDeviation = std::max(maxDeviation, deviation);
+        if (n <= stepsPerPeriod)
+            firstPeriodMax = std::max(firstPeriodMax, deviation);
+        if (n > stepsPerPeriod * (periods - 1))
+            lastPeriodMax = std::max(lastPeriodMax, deviation);
+    }
+    EXPECT_LT(maxDeviation, omega * h);
+    // No secular drift: the last period's band is the first period's band.
+    EXPECT_NEAR(lastPeriodMax, firstPeriodMax, 1e-3 * firstPeriodMax);
+}
+
+// RK4's energy error on the oscillator is tiny at the default step.
+TEST(HarmonicOscillator, Rk4ConservesEnergyAtTheDefaultStep)
+{
+    const Scalar omega = 2 * kPi;
+    model::World world = makeOscillator(IntegratorKind::Rk4, 1.0 / 240.0, 1.0, omega * omega, 1.0);
+    const Scalar e0 = computeEnergy(world).total();
+    run(world, 240 * 10);
+    EXPECT_NEAR(computeEnergy(world).total() / e0, 1.0, 1e-7);
+}
+
+// Two free balls joined by a spring form one coupled system: their separation oscillates with
+// ω = √(k/μ), μ = m₁m₂/(m₁+m₂), while the centre of mass moves uniformly. RK4 over the whole
+// state must follow this to fourth order; integrating the bodies one at a time would not.
+TEST(CoupledSpring, TwoBodiesOscillateAtTheReducedMassFrequency)
+{
+    const Scalar m1 = 1.0;
+    const Scalar m2 = 3.0;
+    const Scalar k = 50.0;
+    const Scalar rest = 1.0;
+    const Scalar stretch = 0.2;
+    const Scalar mu = m1 * m2 / (m1 + m2);
+    const Scalar omega = std::sqrt(k / mu);
+
+    auto maxError = [&](Scalar h) {
+        model::World world = makeEmptyWorld(IntegratorKind::Rk4, h);
+        world.bodies.push_back(makeBall("a", m1, 0.1, Vec2(0, 0), Vec2(0, 0.3)));
+        world.bodies.push_back(makeBall("b", m2, 0.1, Vec2(rest + stretch, 0), Vec2(0, 0.3)));
+        model::Spring spring;
+        spring.bodyA = model::BodyId{0};
+        spring.bodyB = model::BodyId{1};
+        spring.stiffness = k;
+        spring.restLength = rest;
+        world.springs.push_back(spring);
+        Simulation simulation;
+        Scalar worst = 0;
+        const int steps = static_cast<int>(std::lround(1.0 / h));
+        for (int i = 1; i <= steps; ++i) {
+            simulation.step(world);
+            const Scalar t = i * h;
+            // Both move up at 0.3 m/s; the separation along x is rest + stretch·cos(ωt).
+            const Scalar separation = world.bodies[1].state.position.x() - world.bodies[0].state.position.x();
+            worst = std::max(worst, std::abs(separation - (rest + stretch * std::cos(omega * t))));
+            EXPECT_NEAR(world.bodies[0].state.position.y(), 0.3 * t, 1e-12);
+        }
+        return worst;
+    };
+    const Scalar coarse = maxError(0.01);
+    const Scalar fine = maxError(0.005);
+    EXPECT_LT(coarse, 1e-5);
+    EXPECT_GE(coarse / fine, 14.0);
+    EXPECT_LE(coarse / fine, 18.0);
+}
+
+// Every integrator leaves fixed bodies where they are, even under gravity and a spring.
+TEST(Integrators, FixedBodiesDoNotMove)
+{
+    for (const IntegratorKind kind : {IntegratorKind::Euler, IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4}) {
+        model::World world = makeEmptyWorld(kind, 0.01, Vec2(0, -9.81));
+        world.bodies.push_back(makeBall("anchor", 1.0, 0.1, Vec2(1, 2), Vec2(5, 5)));
+        world.bodies[0].fixed = true;
+        world.bodies[0].updateDerived();
+        world.bodies.push_back(makeBall("bob", 1.0, 0.1, Vec2(1, 0)));
+        model::Spring spring;
+        spring.bodyA = model::BodyId{1};
+        spring.bodyB = model::BodyId{0};
+        spring.stiffness = 20;
+        spring.damping = 0.5;
+        spring.restLength = 1;
+        world.springs.push_back(spring);
+        const model::BodyState before = world.bodies[0].state;
+        run(world, 100);
+        EXPECT_EQ(world.bodies[0].state, before) << model::integratorName(kind);
+        EXPECT_NE(world.bodies[1].state.position, Vec2(1, 0)) << model::integratorName(kind);
+    }
+}
+
+} // namespace
+} // namespace impetus::controller
