@@ -6,16 +6,21 @@ namespace impetus::model {
 
 AreaProperties polygonAreaProperties(std::span<const Vec2> vertices)
 {
-    // Fan of triangles (origin, pᵢ, pᵢ₊₁). Each has signed area ½ pᵢ×pᵢ₊₁, centroid (pᵢ+pᵢ₊₁)/3 and
-    // polar moment about the origin Aᵢ/6 · (pᵢ·pᵢ + pᵢ·pᵢ₊₁ + pᵢ₊₁·pᵢ₊₁). Triangles on the far side
-    // of the origin have negative area and subtract, which is why any simple polygon works.
-    Scalar twiceArea = 0;
-    Vec2 firstMoment = Vec2::Zero(); // Σ 2Aᵢ·(pᵢ+pᵢ₊₁)
-    Scalar moment = 0; // Σ 2Aᵢ·(pᵢ·pᵢ + pᵢ·pᵢ₊₁ + pᵢ₊₁·pᵢ₊₁)
+    // Fan of triangles (r, pᵢ, pᵢ₊₁) from a reference point r. Each has signed area ½ dᵢ×dᵢ₊₁
+    // (dᵢ = pᵢ − r), centroid r + (dᵢ+dᵢ₊₁)/3 and polar moment about r Aᵢ/6 · (dᵢ·dᵢ + dᵢ·dᵢ₊₁ +
+    // dᵢ₊₁·dᵢ₊₁). Triangles on the far side of r have negative area and subtract, which is why any
+    // simple polygon works.
+    // r is the first vertex, not the origin: the parallel-axis shift J = J_r − A·|c − r|² then
+    // subtracts numbers of the shape's own size. About the origin, a shape 1 km away would lose
+    // ~9 of its 16 digits to cancellation.
     const std::size_t n = vertices.size();
+    const Vec2 reference = n > 0 ? vertices[0] : Vec2::Zero();
+    Scalar twiceArea = 0;
+    Vec2 firstMoment = Vec2::Zero(); // Σ 2Aᵢ·(dᵢ+dᵢ₊₁)
+    Scalar moment = 0; // Σ 2Aᵢ·(dᵢ·dᵢ + dᵢ·dᵢ₊₁ + dᵢ₊₁·dᵢ₊₁)
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec2& p = vertices[i];
-        const Vec2& q = vertices[(i + 1) % n];
+        const Vec2 p = vertices[i] - reference;
+        const Vec2 q = vertices[(i + 1) % n] - reference;
         const Scalar c = cross(p, q);
         twiceArea += c;
         firstMoment += c * (p + q);
@@ -23,13 +28,14 @@ AreaProperties polygonAreaProperties(std::span<const Vec2> vertices)
     }
     AreaProperties props;
     const Scalar signedA = twiceArea / 2;
-    props.centroid = firstMoment / (3 * twiceArea);
+    const Vec2 centroidFromReference = firstMoment / (3 * twiceArea);
+    props.centroid = reference + centroidFromReference;
     // Orientation flips the sign of every term alike; divide it out to get positive quantities.
     const Scalar sign = signedA < 0 ? -1.0 : 1.0;
     props.area = sign * signedA;
-    const Scalar momentAboutOrigin = sign * moment / 12;
-    // Parallel-axis theorem: J_c = J_0 − A·|c|².
-    props.polarMoment = momentAboutOrigin - props.area * props.centroid.squaredNorm();
+    const Scalar momentAboutReference = sign * moment / 12;
+    // Parallel-axis theorem: J_c = J_r − A·|c − r|².
+    props.polarMoment = momentAboutReference - props.area * centroidFromReference.squaredNorm();
     return props;
 }
 

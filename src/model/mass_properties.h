@@ -18,10 +18,10 @@ struct AreaProperties {
 };
 
 /// Properties of a polygon (either winding; the area is returned positive) by decomposition into
-/// the triangles (origin, pᵢ, pᵢ₊₁): signed areas Aᵢ = ½ pᵢ×pᵢ₊₁ sum to the area, the centroid is
-/// Σ Aᵢ(pᵢ+pᵢ₊₁)/3 / A, and each triangle's moment about the origin, Aᵢ(pᵢ·pᵢ + pᵢ·pᵢ₊₁ + pᵢ₊₁·pᵢ₊₁)/6,
-/// sums to J₀. The parallel-axis theorem shifts it to the centroid: J = J₀ − A|c|².
-/// Precondition: validatePolygon(vertices) is empty.
+/// the triangles (r, pᵢ, pᵢ₊₁) fanned from the first vertex r. With dᵢ = pᵢ − r, the signed areas
+/// Aᵢ = ½ dᵢ×dᵢ₊₁ sum to the area, the centroid is r + Σ Aᵢ(dᵢ+dᵢ₊₁)/3 / A, and each triangle's
+/// moment about r, Aᵢ(dᵢ·dᵢ + dᵢ·dᵢ₊₁ + dᵢ₊₁·dᵢ₊₁)/6, sums to J_r. The parallel-axis theorem shifts
+/// it to the centroid: J = J_r − A|c − r|². Precondition: validatePolygon(vertices) is empty.
 AreaProperties polygonAreaProperties(std::span<const Vec2> vertices);
 
 /// Properties of any shape: circle J = πr⁴/2 (I = ½mr²), ellipse J = πab(a²+b²)/4
