@@ -1,0 +1,249 @@
+/// \file impetus_main.cpp
+/// The desktop app `impetus` (CONTRACT.md section 3).
+///
+///   impetus                      opens the default example scene, paused, ready to press Play
+///   impetus SCENE.json           opens that scene
+///   impetus --screenshot OUT.png [--run-for SECONDS] [--size WxH] [SCENE.json]
+///                                loads the scene (the default scene when none is given), takes
+///                                round(SECONDS / dt) fixed steps headless, renders the canvas
+///                                exactly as the window shows it into a WxH PNG (default
+///                                1280x720) and exits
+///
+/// Exit codes, as for impetus-cli: 0 success; 2 bad usage or a bad scene (message on stderr);
+/// 1 a failure at run time (the PNG cannot be written, the simulation produced a non-finite
+/// number, the embedded default scene cannot be read).
+///
+/// A scene given on the command line that fails to load is reported on stderr, one
+/// "FILE: path: reason" line per problem, and the app exits with 2 without opening a window. A
+/// command line is a script's or a terminal user's tool: both read stderr, and a modal dialog
+/// would hang a script. Inside the running app, File > Open shows the problems in a dialog
+/// instead and keeps the current scene.
+
+#include "view/canvas_view.h"
+#include "view/main_window.h"
+#include "view/scene_loading.h"
+#include "view/screenshot.h"
+#include "view/simulation_runner.h"
+
+#include <QApplication>
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QImageWriter>
+#include <QRegularExpression>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+namespace {
+
+namespace view = impetus::view;
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+/// Default screenshot size, px: 720p, a common projector and slide size.
+constexpr int kDefaultScreenshotWidth = 1280;
+constexpr int kDefaultScreenshotHeight = 720;
+
+/// Largest screenshot side, px. QImage and PNG go further, but a bigger image is a typo, and
+/// refusing it beats allocating gigabytes.
+constexpr int kMaxScreenshotSide = 16384;
+
+/// Most steps --run-for may ask for: 10⁹ steps (about 48 simulated days at 240 Hz) is already
+/// hours of computing, so anything longer is a mistake.
+constexpr double kMaxScreenshotSteps = 1e9;
+
+/// Default main window size, px: fits a 1366x768 laptop screen with its panels.
+constexpr int kWindowWidth = 1200;
+constexpr int kWindowHeight = 720;
+
+QString translate(const char* text) { return QCoreApplication::translate("impetus", text); }
+
+void printError(const QString& message)
+{
+    std::fputs(qPrintable(QStringLiteral("impetus: ") + message + QLatin1Char('\n')), stderr);
+}
+
+void printProblems(const QString& path, const QStringList& problems)
+{
+    for (const QString& problem : problems)
+        std::fputs(qPrintable(path + QStringLiteral(": ") + problem + QLatin1Char('\n')), stderr);
+}
+
+/// "WxH" with both sides in 1 … kMaxScreenshotSide.
+std::optional<QSize> parseSize(const QString& text)
+{
+    static const QRegularExpression pattern(QStringLiteral("^(\\d{1,6})[xX](\\d{1,6})$"));
+    const QRegularExpressionMatch match = pattern.match(text);
+    if (!match.hasMatch())
+        return std::nullopt;
+    const int width = match.captured(1).toInt();
+    const int height = match.captured(2).toInt();
+    if (width < 1 || height < 1 || width > kMaxScreenshotSide || height > kMaxScreenshotSide)
+        return std::nullopt;
+    return QSize(width, height);
+}
+
+/// The name of the first body whose state is not finite, if any.
+std::optional<QString> firstNonFiniteBody(const impetus::model::World& world)
+{
+    for (const impetus::model::Body& body : world.bodies) {
+        const impetus::model::BodyState& s = body.state;
+        if (!impetus::isFinite(s.position) || !impetus::isFinite(s.velocity) || !std::isfinite(s.angle)
+            || !std::isfinite(s.angularVelocity))
+            return QString::fromStdString(body.name);
+    }
+    return std::nullopt;
+}
+
+int runScreenshot(const QString& output, const QString& runForText, const QString& sizeText,
+                  const QString& scenePath)
+{
+    const std::optional<QSize> size = parseSize(sizeText);
+    if (!size) {
+        printError(translate("--size must be WxH with both sides from 1 to %1 pixels, not “%2”")
+                       .arg(kMaxScreenshotSide)
+                       .arg(sizeText));
+        return kExitUsage;
+    }
+    bool numberOk = false;
+    const double runFor = runForText.toDouble(&numberOk);
+    if (!numberOk || !std::isfinite(runFor) || runFor < 0) {
+        printError(translate("--run-for must be a number of seconds ≥ 0, not “%1”").arg(runForText));
+        return kExitUsage;
+    }
+
+    const QString path = scenePath.isEmpty() ? QString::fromLatin1(view::kDefaultScenePath) : scenePath;
+    impetus::model::SceneLoadResult scene = view::loadScene(path);
+    if (!scene.ok()) {
+        printProblems(path, view::problemMessages(scene));
+        return scenePath.isEmpty() ? kExitFailure : kExitUsage;
+    }
+
+    const double steps = std::round(runFor / scene.world->settings.timeStep);
+    if (steps > kMaxScreenshotSteps) {
+        printError(translate("--run-for %1 s is %2 steps, more than the %3 allowed")
+                       .arg(runFor)
+                       .arg(steps, 0, 'g', 3)
+                       .arg(kMaxScreenshotSteps, 0, 'g', 3));
+        return kExitUsage;
+    }
+
+    view::SimulationRunner runner;
+    runner.setWorld(std::move(*scene.world));
+    // The canvas exists before the run, as in the window: it frames the bodies where they were
+    // loaded, and a body that flies away leaves the picture instead of shrinking it.
+    view::CanvasView canvas(runner);
+
+    // Stepped in chunks of one simulated second: the canvas follows the world once per chunk
+    // rather than once per step, and a non-finite state is caught within a second of appearing.
+    const double dt = runner.world().settings.timeStep;
+    const auto chunk = std::max<std::int64_t>(1, std::llround(1.0 / dt));
+    for (auto remaining = static_cast<std::int64_t>(steps); remaining > 0; remaining -= chunk) {
+        runner.stepBy(std::min(chunk, remaining));
+        if (const std::optional<QString> body = firstNonFiniteBody(runner.world())) {
+            printError(translate("the simulation produced a non-finite number: body “%1”, by t = %2 s")
+                           .arg(*body)
+                           .arg(runner.world().time));
+            return kExitFailure;
+        }
+    }
+
+    const QImage image = view::renderCanvasImage(canvas, *size);
+    QImageWriter writer(output, "png");
+    if (!writer.write(image)) {
+        printError(translate("cannot write %1: %2").arg(output, writer.errorString()));
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+/// True when the command line asks for something that shows no window: a screenshot or the help
+/// text. Looked at before QApplication exists, to choose the platform plugin.
+bool needsNoDisplay(int argc, char* argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view argument(argv[i]);
+        if (argument == "--screenshot" || argument.starts_with("--screenshot=") || argument == "-h"
+            || argument == "--help" || argument == "-?" || argument == "--help-all")
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    // A screenshot (or --help) never shows a window, so it needs no display: a teacher can run it
+    // over ssh or in a batch job. An explicit QT_QPA_PLATFORM is respected.
+    if (needsNoDisplay(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("impetus"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(translate("Impetus, a 2D physics lab for the classroom."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"), translate("Render the canvas to the PNG file FILE and exit."),
+        translate("FILE"));
+    const QCommandLineOption runForOption(
+        QStringLiteral("run-for"), translate("With --screenshot: simulate SECONDS first (default 0)."),
+        translate("SECONDS"), QStringLiteral("0"));
+    const QCommandLineOption sizeOption(
+        QStringLiteral("size"), translate("With --screenshot: the image size in pixels (default 1280x720)."),
+        translate("WxH"), QStringLiteral("%1x%2").arg(kDefaultScreenshotWidth).arg(kDefaultScreenshotHeight));
+    parser.addOption(screenshotOption);
+    parser.addOption(runForOption);
+    parser.addOption(sizeOption);
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 translate("The scene file to open (default: the example scene)."),
+                                 QStringLiteral("[SCENE.json]"));
+
+    // parse() rather than process(): process() exits with 1 on a bad option, and the contract
+    // says bad usage is 2.
+    if (!parser.parse(QCoreApplication::arguments())) {
+        printError(parser.errorText());
+        return kExitUsage;
+    }
+    if (parser.isSet(helpOption))
+        parser.showHelp(kExitOk);
+
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1) {
+        printError(translate("expected at most one scene file, got %1").arg(positional.size()));
+        return kExitUsage;
+    }
+    const QString scenePath = positional.value(0);
+
+    if (parser.isSet(screenshotOption)) {
+        return runScreenshot(parser.value(screenshotOption), parser.value(runForOption),
+                             parser.value(sizeOption), scenePath);
+    }
+    if (parser.isSet(runForOption) || parser.isSet(sizeOption)) {
+        printError(translate("--run-for and --size need --screenshot"));
+        return kExitUsage;
+    }
+
+    view::MainWindow window;
+    const QString path = scenePath.isEmpty() ? QString::fromLatin1(view::kDefaultScenePath) : scenePath;
+    const QStringList problems = window.openScene(path);
+    if (!problems.isEmpty()) {
+        printProblems(path, problems);
+        // The embedded default scene failing is a broken build, not the user's input.
+        return scenePath.isEmpty() ? kExitFailure : kExitUsage;
+    }
+    window.resize(kWindowWidth, kWindowHeight);
+    window.show();
+    return QApplication::exec();
+}

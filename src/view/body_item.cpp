@@ -1,0 +1,94 @@
+#include "view/body_item.h"
+
+#include "view/view_constants.h"
+
+#include <QColor>
+#include <QPainter>
+#include <QPolygonF>
+#include <QTransform>
+
+#include <cmath>
+#include <variant>
+
+namespace impetus::view {
+
+namespace {
+
+QColor toQColor(const model::Color& color) { return QColor(color.r, color.g, color.b); }
+
+QPainterPath outlinePath(const model::Body& body)
+{
+    QPainterPath path;
+    if (const auto* circle = std::get_if<model::Circle>(&body.shape)) {
+        path.addEllipse(QPointF(0, 0), circle->radius, circle->radius);
+    } else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape)) {
+        path.addEllipse(QPointF(0, 0), ellipse->radiusX, ellipse->radiusY);
+    } else {
+        // Boxes and polygons: the outline the model derived, already centred on the centre of
+        // mass. For a concave polygon this is the true outline, not the convex pieces.
+        QPolygonF polygon;
+        polygon.reserve(static_cast<qsizetype>(body.geometry.outline.size()));
+        for (const Vec2& v : body.geometry.outline)
+            polygon << QPointF(v.x(), v.y());
+        path.addPolygon(polygon);
+        path.closeSubpath();
+    }
+    return path;
+}
+
+} // namespace
+
+BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* parent)
+    : QGraphicsItem(parent)
+    , m_id(id)
+    , m_outline(outlinePath(body))
+{
+    if (const auto* circle = std::get_if<model::Circle>(&body.shape))
+        m_radiusLine = QLineF(0, 0, circle->radius, 0);
+    else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
+        m_radiusLine = QLineF(0, 0, ellipse->radiusX, 0);
+
+    const QColor color = toQColor(body.color);
+    m_fill = QBrush(body.fixed ? color.darker(constants::kFixedFillDarkerFactor) : color);
+    if (body.fixed)
+        m_hatch = QBrush(color.darker(constants::kFixedHatchDarkerFactor), Qt::BDiagPattern);
+    m_pen = QPen(color.darker(constants::kOutlineDarkerFactor), constants::kOutlineWidthPx);
+    m_pen.setCosmetic(true);
+    m_pen.setJoinStyle(Qt::RoundJoin);
+
+    setPose(body.state);
+}
+
+void BodyItem::setPose(const model::BodyState& state)
+{
+    // Built from cos and sin directly: in the y-up scene, (x, y) ↦ (c·x − s·y, s·x + c·y) is the
+    // counter-clockwise rotation of the model, and the view's y flip then shows it
+    // counter-clockwise on screen too. QTransform's (m11, m12, m21, m22) are (c, s, −s, c).
+    const qreal c = std::cos(state.angle);
+    const qreal s = std::sin(state.angle);
+    setTransform(QTransform(c, s, -s, c, 0, 0));
+    setPos(state.position.x(), state.position.y());
+}
+
+QPainterPath BodyItem::shape() const { return m_outline; }
+
+QRectF BodyItem::boundingRect() const { return m_outline.boundingRect(); }
+
+void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+{
+    // Fill, then the hatch of a fixed body, then the outline on top of both.
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(m_fill);
+    painter->drawPath(m_outline);
+    if (m_hatch.style() != Qt::NoBrush) {
+        painter->setBrush(m_hatch);
+        painter->drawPath(m_outline);
+    }
+    painter->setPen(m_pen);
+    painter->setBrush(Qt::NoBrush);
+    painter->drawPath(m_outline);
+    if (!m_radiusLine.isNull())
+        painter->drawLine(m_radiusLine);
+}
+
+} // namespace impetus::view

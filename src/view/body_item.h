@@ -1,0 +1,56 @@
+#pragma once
+/// \file body_item.h
+/// The picture of one body on the canvas.
+
+#include "model/body.h"
+
+#include <QBrush>
+#include <QGraphicsItem>
+#include <QLineF>
+#include <QPainterPath>
+#include <QPen>
+
+namespace impetus::view {
+
+/// Draws one body in its own frame (metres, origin at the centre of mass, y up): a circle or an
+/// ellipse with a radius line that shows the rotation, or the outline of a box or polygon. A
+/// concave polygon is drawn as its outline, not as the convex pieces the engine splits it into.
+/// The fill is the body's colour; a fixed body is darker and hatched. Outlines are cosmetic (the
+/// same width in pixels at every zoom).
+///
+/// The item keeps a copy of what it draws; setPose() moves it. It never reads the world itself.
+class BodyItem : public QGraphicsItem {
+public:
+    /// QGraphicsItem::type() of body items.
+    enum { Type = UserType + 1 };
+
+    /// An item for `body`, which is world.bodies[id.index]; placed at the body's current pose.
+    BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* parent = nullptr);
+
+    /// The id of the body this item draws.
+    model::BodyId bodyId() const { return m_id; }
+
+    /// Places the item at the body's pose: item → scene is the rotation by state.angle
+    /// (counter-clockwise) followed by the translation to state.position.
+    void setPose(const model::BodyState& state);
+
+    /// The outline of the body in its own frame, m.
+    QPainterPath shape() const override;
+
+    /// The outline's bounding box in the body frame, m.
+    QRectF boundingRect() const override;
+    /// Fill, hatch (fixed bodies), outline and, for round shapes, the radius line.
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+    /// BodyItem::Type, for qgraphicsitem_cast.
+    int type() const override { return Type; }
+
+private:
+    model::BodyId m_id;
+    QPainterPath m_outline;
+    QLineF m_radiusLine; ///< drawn for round shapes; null for polygons
+    QBrush m_fill;
+    QBrush m_hatch; ///< Qt::NoBrush unless the body is fixed
+    QPen m_pen;
+};
+
+} // namespace impetus::view

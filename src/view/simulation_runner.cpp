@@ -1,0 +1,128 @@
+#include "view/simulation_runner.h"
+
+#include "view/view_constants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace impetus::view {
+
+SimulationRunner::SimulationRunner(QObject* parent)
+    : QObject(parent)
+{
+    m_timer.setInterval(constants::kFrameIntervalMs);
+    // PreciseTimer: a coarse timer may fire up to 5 % late, which shows as judder at 60 Hz.
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &SimulationRunner::onTimerTick);
+}
+
+void SimulationRunner::setWorld(model::World world)
+{
+    pause();
+    m_world = std::move(world);
+    m_worldAtLastPlay.reset();
+    m_accumulator = 0;
+    emit worldChanged();
+}
+
+void SimulationRunner::setSpeed(double speed)
+{
+    if (std::isfinite(speed) && speed > 0)
+        m_speed = speed;
+}
+
+std::int64_t SimulationRunner::maxStepsPerFrame() const
+{
+    const double steps = std::floor(constants::kMaxSimulatedTimePerFrame / m_world.settings.timeStep);
+    return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+}
+
+std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
+{
+    const double dt = m_world.settings.timeStep;
+    if (!(dt > 0) || !std::isfinite(wallSeconds) || wallSeconds < 0)
+        return 0;
+    m_accumulator += wallSeconds * m_speed;
+    const std::int64_t maxSteps = maxStepsPerFrame();
+    std::int64_t steps = 0;
+    while (m_accumulator >= dt && steps < maxSteps) {
+        m_simulation.step(m_world);
+        m_accumulator -= dt;
+        ++steps;
+    }
+    // The frame owed more than we may simulate in one tick: drop the backlog so that simulated
+    // time slows down for a moment instead of the next frames trying (and failing) to catch up.
+    if (m_accumulator >= dt)
+        m_accumulator = 0;
+    if (steps > 0)
+        emit stepped();
+    return steps;
+}
+
+void SimulationRunner::play()
+{
+    if (isRunning())
+        return;
+    m_worldAtLastPlay = m_world;
+    m_accumulator = 0;
+    m_clock.start();
+    m_timer.start();
+    emit runningChanged(true);
+}
+
+void SimulationRunner::pause()
+{
+    if (!isRunning())
+        return;
+    m_timer.stop();
+    emit runningChanged(false);
+}
+
+void SimulationRunner::setRunning(bool running)
+{
+    if (running)
+        play();
+    else
+        pause();
+}
+
+void SimulationRunner::stepOnce()
+{
+    pause();
+    takeSteps(1);
+}
+
+void SimulationRunner::stepBy(std::int64_t count)
+{
+    if (count > 0)
+        takeSteps(count);
+}
+
+void SimulationRunner::resetToLastPlay()
+{
+    if (!m_worldAtLastPlay)
+        return;
+    pause();
+    m_world = *m_worldAtLastPlay;
+    m_accumulator = 0;
+    emit worldChanged();
+}
+
+void SimulationRunner::onTimerTick()
+{
+    // Measure the real time since the last tick rather than trusting the timer interval: timers
+    // fire late under load, and the simulation must follow the wall clock, not the tick count.
+    const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+    m_clock.restart();
+    advanceWallTime(elapsed);
+}
+
+void SimulationRunner::takeSteps(std::int64_t count)
+{
+    for (std::int64_t i = 0; i < count; ++i)
+        m_simulation.step(m_world);
+    emit stepped();
+}
+
+} // namespace impetus::view

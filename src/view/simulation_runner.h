@@ -1,0 +1,105 @@
+#pragma once
+/// \file simulation_runner.h
+/// The one adapter between Qt and the engine: owns the world, runs it with the fixed time step on a
+/// timer, and tells the view when it changed.
+
+#include "controller/simulation.h"
+#include "model/world.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <cstdint>
+#include <optional>
+
+namespace impetus::view {
+
+/// Owns a model::World and a controller::Simulation and advances the world in real time.
+///
+/// Each timer tick adds the elapsed wall time × speed() to an accumulator and calls
+/// Simulation::step() with the world's fixed time step while the accumulator holds at least one
+/// step. At most constants::kMaxSimulatedTimePerFrame of simulated time is taken per tick; wall
+/// time beyond that is dropped, so a slow frame slows simulated time down but never changes the
+/// step. The physics therefore gives the same bits whatever the frame rate.
+class SimulationRunner : public QObject {
+    Q_OBJECT
+
+public:
+    /// A runner holding an empty world, paused.
+    explicit SimulationRunner(QObject* parent = nullptr);
+
+    /// The world in its current state.
+    const model::World& world() const { return m_world; }
+
+    /// Replaces the world (pausing first) and forgets the world saved at the last play().
+    /// Emits worldChanged().
+    void setWorld(model::World world);
+
+    /// True while the timer runs the simulation.
+    bool isRunning() const { return m_timer.isActive(); }
+
+    /// Simulated seconds per wall-clock second (1: real time).
+    double speed() const { return m_speed; }
+
+    /// Sets the speed factor; values that are not finite and positive are ignored.
+    void setSpeed(double speed);
+
+    /// The world as it was at the last play() since setWorld(), if any: what a reset goes back to.
+    const std::optional<model::World>& worldAtLastPlay() const { return m_worldAtLastPlay; }
+
+    /// The most fixed steps one timer tick takes: the steps in constants::kMaxSimulatedTimePerFrame,
+    /// at least one.
+    std::int64_t maxStepsPerFrame() const;
+
+    /// Adds `wallSeconds` × speed() to the accumulator and takes fixed steps while it holds one,
+    /// up to maxStepsPerFrame(); a backlog beyond that is dropped. Emits stepped() once if it
+    /// stepped. Returns the number of steps taken. The timer calls this with the measured frame
+    /// time; tests call it directly.
+    std::int64_t advanceWallTime(double wallSeconds);
+
+public slots:
+    /// Starts running in real time. Saves a copy of the world for a later reset.
+    void play();
+
+    /// Stops running; the world keeps its current state.
+    void pause();
+
+    /// play() when `running`, else pause().
+    void setRunning(bool running);
+
+    /// Pauses if running, then takes exactly one fixed step and emits stepped().
+    void stepOnce();
+
+    /// Takes `count` fixed steps at once (headless: no timer, no wall time) and emits stepped()
+    /// once. Does nothing for count ≤ 0.
+    void stepBy(std::int64_t count);
+
+    /// Pauses and puts back the world saved at the last play(); emits worldChanged(). Does nothing
+    /// when play() was not called since setWorld().
+    void resetToLastPlay();
+
+signals:
+    /// The world was replaced (a new scene, a reset): bodies may have been added or removed.
+    void worldChanged();
+
+    /// The world advanced by one or more fixed steps; the bodies are the same.
+    void stepped();
+
+    /// The runner started (true) or stopped (false).
+    void runningChanged(bool running);
+
+private:
+    void onTimerTick();
+    void takeSteps(std::int64_t count);
+
+    model::World m_world;
+    std::optional<model::World> m_worldAtLastPlay;
+    controller::Simulation m_simulation;
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    double m_accumulator = 0; ///< simulated time owed to the world, s
+    double m_speed = 1;
+};
+
+} // namespace impetus::view

@@ -1,0 +1,80 @@
+#pragma once
+/// \file view_constants.h
+/// Every tuning constant of the desktop view, with its unit and the reason for its value.
+/// Nothing here is physical: these only decide how often the view runs the engine and how the
+/// canvas looks.
+
+#include <QColor>
+
+namespace impetus::view::constants {
+
+/// Interval of the run timer, ms. 16 ms is about one 60 Hz display frame; the runner measures the
+/// real elapsed time anyway, so a late tick only means more fixed steps in that tick.
+inline constexpr int kFrameIntervalMs = 16;
+
+/// The most simulated time one timer tick may catch up, s. When a frame takes longer than this
+/// (a slow machine, a debugger pause, a dragged window) the rest of the wall time is dropped:
+/// simulated time runs slower instead of the runner ever taking a larger step or piling up a
+/// backlog that freezes the window (the "spiral of death").
+inline constexpr double kMaxSimulatedTimePerFrame = 0.1;
+
+/// Space left around the bodies when a scene is framed, as a fraction of the larger side of their
+/// bounding box, on each side. 8 % keeps outlines off the window edge without wasting the canvas.
+inline constexpr double kFrameMarginFraction = 0.08;
+
+/// The smallest margin around framed bodies, m, so that a single small body is not blown up to fill
+/// the whole window.
+inline constexpr double kMinimumFrameMargin = 0.5;
+
+/// The smallest region a scene is framed to, m. A lone 5 cm ball is shown in a 2 m window, which
+/// is what a student expects from "a small ball", rather than magnified fifty times.
+inline constexpr double kMinimumFrameExtent = 2.0;
+
+/// Region framed when a world has no bodies at all, m (width, height), centred on the origin.
+inline constexpr double kEmptyWorldWidth = 10.0;
+inline constexpr double kEmptyWorldHeight = 6.0;
+
+/// How far the scene rectangle reaches beyond the framed region, as a multiple of its size. The
+/// scroll bars are hidden, but QGraphicsView only centres on points inside its scene rectangle;
+/// this leaves room for bodies that fly away and for the later pan and zoom tools.
+inline constexpr double kSceneRectPaddingFactor = 50.0;
+
+/// The grid spacing grows through 1, 2, 5 × 10ⁿ m until neighbouring lines are at least this far
+/// apart on screen, px: dense enough to read distances, sparse enough to stay in the background.
+inline constexpr double kMinimumGridSpacingPx = 28.0;
+
+/// Width of body outlines and springs, px (cosmetic: the same at every zoom).
+inline constexpr double kOutlineWidthPx = 1.5;
+
+/// Outline colour factor for QColor::darker(): 160 % darker than the fill reads as an edge.
+inline constexpr int kOutlineDarkerFactor = 160;
+
+/// Fill of a fixed body relative to its colour (QColor::darker()), and its hatch colour.
+inline constexpr int kFixedFillDarkerFactor = 125;
+inline constexpr int kFixedHatchDarkerFactor = 200;
+
+/// Number of zig-zag corners drawn on a spring. Fixed, so a stretched spring shows longer teeth.
+inline constexpr int kSpringZigZagCorners = 12;
+
+/// Half-width of a spring's zig-zag, m: visible at classroom scales (metres) but narrower than a
+/// typical body.
+inline constexpr double kSpringHalfWidth = 0.07;
+
+/// The spring's zig-zag is at most this fraction of its rest length wide, so short springs stay
+/// springs and do not turn into wide triangles.
+inline constexpr double kSpringMaxHalfWidthPerLength = 0.15;
+
+/// Straight lead at each end of a spring, as a fraction of its current length.
+inline constexpr double kSpringLeadFraction = 0.1;
+
+/// Radius of the marker drawn at a spring's fixed world anchor, px.
+inline constexpr double kAnchorMarkerRadiusPx = 4.0;
+
+/// Canvas colours: a near-white paper, light grey grid lines, and slightly darker axes.
+inline const QColor kBackgroundColor{0xfa, 0xfa, 0xf9};
+inline const QColor kMinorGridColor{0xe7, 0xe5, 0xe4};
+inline const QColor kMajorGridColor{0xd6, 0xd3, 0xd1};
+inline const QColor kAxisColor{0xa8, 0xa2, 0x9e};
+inline const QColor kSpringColor{0x44, 0x40, 0x3c};
+
+} // namespace impetus::view::constants

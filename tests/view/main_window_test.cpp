@@ -1,0 +1,219 @@
+// MainWindow, driven as a user would: keys, the default scene, opening a bad file.
+
+#include "test_worlds.h"
+#include "view/body_item.h"
+#include "view/canvas_view.h"
+#include "view/main_window.h"
+#include "view/scene_loading.h"
+#include "view/simulation_runner.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QLabel>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QToolBar>
+
+using impetus::view::MainWindow;
+namespace model = impetus::model;
+namespace test = impetus::view::test;
+
+namespace {
+
+/// The text of every permanent label in the status bar, joined.
+QString statusText(const MainWindow& window)
+{
+    QStringList texts;
+    for (const QLabel* label : window.statusBar()->findChildren<QLabel*>())
+        texts << label->text();
+    return texts.join(QLatin1Char(' '));
+}
+
+} // namespace
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void showsDefaultScene();
+    void spaceStartsAndPauses();
+    void rightArrowStepsExactlyOneTimeStep();
+    void statusBarShowsTimeAndEnergy();
+    void badSceneFileLeavesCurrentSceneUntouched();
+    void badSceneFileShowsProblemsInMessageBox();
+    void widgetsHaveAccessibleNames();
+
+private:
+    /// Shows `window` and waits until it is active, so that its shortcuts work.
+    static bool showActive(MainWindow& window);
+};
+
+bool MainWindowTest::showActive(MainWindow& window)
+{
+    window.resize(800, 600);
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
+void MainWindowTest::showsDefaultScene()
+{
+    MainWindow window;
+    const QStringList problems = window.openScene(QString::fromLatin1(impetus::view::kDefaultScenePath));
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    QVERIFY(showActive(window));
+
+    const model::World& world = window.runner().world();
+    QVERIFY(world.bodies.size() >= 3);
+    QVERIFY(!world.springs.empty());
+    QCOMPARE(window.canvas().bodyItems().size(), world.bodies.size());
+    QCOMPARE(window.canvas().springItems().size(), world.springs.size());
+    QCOMPARE(window.windowTitle(), QStringLiteral("Impetus — default"));
+    QVERIFY(!window.runner().isRunning());
+
+    // Every body is in view at the start.
+    const QRectF visible = window.canvas().mapToScene(window.canvas().viewport()->rect()).boundingRect();
+    for (const impetus::view::BodyItem* item : window.canvas().bodyItems())
+        QVERIFY(visible.contains(item->sceneBoundingRect()));
+}
+
+void MainWindowTest::spaceStartsAndPauses()
+{
+    MainWindow window;
+    window.setScene(test::hangingBoxWorld(), QStringLiteral("hanging box"));
+    QVERIFY(showActive(window));
+    QCOMPARE(window.windowTitle(), QStringLiteral("Impetus — hanging box"));
+    QCOMPARE(window.playAction()->text(), QStringLiteral("Play"));
+
+    QTest::keyClick(&window, Qt::Key_Space);
+    QVERIFY(window.runner().isRunning());
+    QVERIFY(window.playAction()->isChecked());
+    QCOMPARE(window.playAction()->text(), QStringLiteral("Pause"));
+    QTest::qWait(200);
+    QVERIFY(window.runner().world().time > 0);
+
+    QTest::keyClick(&window, Qt::Key_Space);
+    QVERIFY(!window.runner().isRunning());
+    QVERIFY(!window.playAction()->isChecked());
+    QCOMPARE(window.playAction()->text(), QStringLiteral("Play"));
+    const double pausedAt = window.runner().world().time;
+    QTest::qWait(100);
+    QCOMPARE(window.runner().world().time, pausedAt);
+}
+
+void MainWindowTest::rightArrowStepsExactlyOneTimeStep()
+{
+    MainWindow window;
+    window.setScene(test::hangingBoxWorld(), QStringLiteral("hanging box"));
+    QVERIFY(showActive(window));
+    const double dt = window.runner().world().settings.timeStep;
+    const model::BodyState start = window.runner().world().bodies[0].state;
+
+    QTest::keyClick(&window, Qt::Key_Right);
+    QCOMPARE(window.runner().world().stepCount, std::int64_t(1));
+    QCOMPARE(window.runner().world().time, dt);
+    QVERIFY(!window.runner().isRunning());
+    // The box, pulled by gravity and the spring, moved, and its item followed.
+    const model::BodyState& now = window.runner().world().bodies[0].state;
+    QVERIFY(now.position != start.position);
+    QCOMPARE(window.canvas().bodyItems()[0]->scenePos(), QPointF(now.position.x(), now.position.y()));
+
+    QTest::keyClick(&window, Qt::Key_Right);
+    QCOMPARE(window.runner().world().stepCount, std::int64_t(2));
+}
+
+void MainWindowTest::statusBarShowsTimeAndEnergy()
+{
+    MainWindow window;
+    model::World world = test::risingBallWorld();
+    world.bodies[0].state.velocity = impetus::Vec2(0, 2); // KE = ½·m·4 = 2m
+    const double mass = world.bodies[0].mass;
+    window.setScene(world, QStringLiteral("rising"));
+    QVERIFY(showActive(window));
+    QVERIFY2(statusText(window).contains(QStringLiteral("t = 0.000 s")), qPrintable(statusText(window)));
+    QVERIFY2(statusText(window).contains(QStringLiteral("E = %1 J").arg(2 * mass, 0, 'f', 3)),
+             qPrintable(statusText(window)));
+
+    QTest::keyClick(&window, Qt::Key_Right);
+    QVERIFY2(statusText(window).contains(QStringLiteral("t = 0.004 s")), qPrintable(statusText(window)));
+}
+
+void MainWindowTest::badSceneFileLeavesCurrentSceneUntouched()
+{
+    MainWindow window;
+    window.setScene(test::hangingBoxWorld(), QStringLiteral("hanging box"));
+    window.runner().stepBy(5);
+    const model::World before = window.runner().world();
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("broken.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{ \"format\": \"impetus-scene\", \"version\": 1, \"bodies\": [ { \"name\": ");
+    file.close();
+
+    const QStringList problems = window.openScene(path);
+    QVERIFY(!problems.isEmpty());
+    QVERIFY(window.runner().world() == before);
+    QCOMPARE(window.windowTitle(), QStringLiteral("Impetus — hanging box"));
+    QCOMPARE(window.canvas().bodyItems().size(), before.bodies.size());
+
+    QVERIFY(!window.openScene(dir.filePath(QStringLiteral("missing.json"))).isEmpty());
+    QVERIFY(window.runner().world() == before);
+}
+
+void MainWindowTest::badSceneFileShowsProblemsInMessageBox()
+{
+    MainWindow window;
+    window.setScene(test::hangingBoxWorld(), QStringLiteral("hanging box"));
+    QVERIFY(showActive(window));
+    const model::World before = window.runner().world();
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("negative.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({ "format": "impetus-scene", "version": 1,
+        "bodies": [ { "name": "b", "shape": { "type": "circle", "radius": -1 }, "position": [0, 0] } ] })");
+    file.close();
+
+    // The box is modal: read and close it from the event loop it runs.
+    QString shownText;
+    bool boxSeen = false;
+    QTimer::singleShot(0, this, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        boxSeen = true;
+        shownText = box->text() + QLatin1Char('\n') + box->informativeText();
+        box->button(QMessageBox::Ok)->click();
+    });
+    QVERIFY(!window.openSceneInteractively(path));
+    QVERIFY(boxSeen);
+    QVERIFY2(shownText.contains(QStringLiteral("negative.json")), qPrintable(shownText));
+    QVERIFY2(shownText.contains(QStringLiteral("bodies[0].shape.radius")), qPrintable(shownText));
+    QVERIFY(window.runner().world() == before);
+    QCOMPARE(window.windowTitle(), QStringLiteral("Impetus — hanging box"));
+}
+
+void MainWindowTest::widgetsHaveAccessibleNames()
+{
+    MainWindow window;
+    QVERIFY(!window.canvas().accessibleName().isEmpty());
+    const auto toolBars = window.findChildren<QToolBar*>();
+    QCOMPARE(toolBars.size(), 1);
+    QVERIFY(!toolBars.at(0)->accessibleName().isEmpty());
+    QVERIFY(!toolBars.at(0)->widgetForAction(window.playAction())->accessibleName().isEmpty());
+    QVERIFY(!toolBars.at(0)->widgetForAction(window.stepAction())->accessibleName().isEmpty());
+    for (const QLabel* label : window.statusBar()->findChildren<QLabel*>())
+        QVERIFY(!label->accessibleName().isEmpty());
+}
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"

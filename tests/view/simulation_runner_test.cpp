@@ -1,0 +1,157 @@
+// SimulationRunner: the fixed-step accumulator, its per-frame cap, and play/pause/step/reset.
+
+#include "controller/simulation.h"
+#include "test_worlds.h"
+#include "view/simulation_runner.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using impetus::view::SimulationRunner;
+namespace model = impetus::model;
+namespace test = impetus::view::test;
+
+class SimulationRunnerTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void setWorldPausesAndEmitsWorldChanged();
+    void advanceTakesOnlyFixedSteps();
+    void advanceCapsStepsPerFrameAndDropsBacklog();
+    void speedScalesSimulatedTime();
+    void stepByMatchesSimulationStep();
+    void stepOncePausesAndTakesOneStep();
+    void playRunsInRealTimeAndPauseStops();
+    void resetGoesBackToLastPlay();
+};
+
+void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
+{
+    SimulationRunner runner;
+    runner.play();
+    QSignalSpy changed(&runner, &SimulationRunner::worldChanged);
+    QSignalSpy running(&runner, &SimulationRunner::runningChanged);
+    runner.setWorld(test::risingBallWorld());
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(running.count(), 1);
+    QCOMPARE(running.at(0).at(0).toBool(), false);
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(runner.world().bodies.size(), std::size_t(2));
+    QVERIFY(!runner.worldAtLastPlay().has_value());
+}
+
+void SimulationRunnerTest::advanceTakesOnlyFixedSteps()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::risingBallWorld());
+    const double dt = runner.world().settings.timeStep;
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+
+    // 2.5 steps of wall time: two fixed steps, half a step stays in the accumulator.
+    QCOMPARE(runner.advanceWallTime(2.5 * dt), std::int64_t(2));
+    QCOMPARE(runner.world().stepCount, std::int64_t(2));
+    QCOMPARE(stepped.count(), 1);
+    // Less than a step owed: nothing happens, no signal.
+    QCOMPARE(runner.advanceWallTime(0.25 * dt), std::int64_t(0));
+    QCOMPARE(stepped.count(), 1);
+    // The carried 0.75 step plus 0.5 more makes one step.
+    QCOMPARE(runner.advanceWallTime(0.5 * dt), std::int64_t(1));
+    QCOMPARE(runner.world().stepCount, std::int64_t(3));
+
+    // The ball moves at 1 m/s with no force: after 3 steps of dt it is at 3·dt, which holds only
+    // if every step was exactly dt.
+    QVERIFY(qAbs(runner.world().bodies[0].state.position.y() - 3 * dt) < 1e-12);
+}
+
+void SimulationRunnerTest::advanceCapsStepsPerFrameAndDropsBacklog()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::risingBallWorld());
+    const double dt = runner.world().settings.timeStep;
+    const std::int64_t cap = runner.maxStepsPerFrame();
+    QCOMPARE(cap, std::int64_t(24)); // 0.1 s at 1/240 s
+
+    // A one-second stall takes at most `cap` steps of dt: simulated time slows down...
+    QCOMPARE(runner.advanceWallTime(1.0), cap);
+    QVERIFY(qAbs(runner.world().time - static_cast<double>(cap) * dt) < 1e-12);
+    // ...and the rest of that second is dropped, not caught up later.
+    QCOMPARE(runner.advanceWallTime(0.0), std::int64_t(0));
+    QCOMPARE(runner.world().stepCount, cap);
+}
+
+void SimulationRunnerTest::speedScalesSimulatedTime()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::risingBallWorld());
+    const double dt = runner.world().settings.timeStep;
+    runner.setSpeed(2.0);
+    QCOMPARE(runner.speed(), 2.0);
+    QCOMPARE(runner.advanceWallTime(1.5 * dt), std::int64_t(3));
+    runner.setSpeed(-1.0); // ignored
+    QCOMPARE(runner.speed(), 2.0);
+}
+
+void SimulationRunnerTest::stepByMatchesSimulationStep()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::hangingBoxWorld());
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+    runner.stepBy(100);
+    QCOMPARE(stepped.count(), 1);
+
+    model::World expected = test::hangingBoxWorld();
+    impetus::controller::Simulation simulation;
+    for (int i = 0; i < 100; ++i)
+        simulation.step(expected);
+    QVERIFY(runner.world() == expected);
+}
+
+void SimulationRunnerTest::stepOncePausesAndTakesOneStep()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::hangingBoxWorld());
+    runner.play();
+    runner.stepOnce();
+    QVERIFY(!runner.isRunning());
+    const std::int64_t before = runner.world().stepCount;
+    runner.stepOnce();
+    QCOMPARE(runner.world().stepCount, before + 1);
+}
+
+void SimulationRunnerTest::playRunsInRealTimeAndPauseStops()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::hangingBoxWorld());
+    QSignalSpy running(&runner, &SimulationRunner::runningChanged);
+    runner.play();
+    QVERIFY(runner.isRunning());
+    QCOMPARE(running.count(), 1);
+    QTRY_VERIFY(runner.world().time > 0.05);
+
+    runner.pause();
+    QVERIFY(!runner.isRunning());
+    QCOMPARE(running.count(), 2);
+    const double pausedAt = runner.world().time;
+    QTest::qWait(100);
+    QCOMPARE(runner.world().time, pausedAt);
+}
+
+void SimulationRunnerTest::resetGoesBackToLastPlay()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::hangingBoxWorld());
+    runner.stepBy(10);
+    const model::World atPlay = runner.world();
+    runner.play();
+    QTRY_VERIFY(runner.world().stepCount > atPlay.stepCount);
+    runner.pause();
+    QVERIFY(runner.worldAtLastPlay().has_value());
+
+    QSignalSpy changed(&runner, &SimulationRunner::worldChanged);
+    runner.resetToLastPlay();
+    QCOMPARE(changed.count(), 1);
+    QVERIFY(runner.world() == atPlay);
+}
+
+QTEST_MAIN(SimulationRunnerTest)
+#include "simulation_runner_test.moc"
