@@ -1,0 +1,95 @@
+#pragma once
+/// \file example_scenes.h
+/// Scenes built in code: the standard rigid-body stress tests (Box2D's pyramid and "many
+/// pyramids", a polygon rain, a tumbler full of circles) and two small textbook set-ups. The tests,
+/// the engine comparison in bench/ and the example files all start from these.
+///
+/// Every builder returns a fully built World: updateDerived() has been called on every body, and
+/// the world runs the semi-implicit Euler integrator, which is what real-time engines (Box2D,
+/// Chipmunk) use and all a stack of boxes under constant gravity needs (RK4's accuracy buys
+/// nothing once contacts dominate, at four force evaluations a step). Gravity is the world default
+/// (0, −9.81) m/s² except where a builder says otherwise. Lengths are in metres; every body has
+/// the default density of 1 kg/m². The body order of each scene is part of its contract (the
+/// benchmark finds the top box of a pyramid by it) and is given with each builder.
+
+#include "model/constants.h"
+#include "model/scalar.h"
+#include "model/world.h"
+
+namespace impetus::model {
+
+/// What the scene builders share: the surface of every body and the world's fixed step.
+struct SceneOptions {
+    /// Coulomb friction coefficient μ of every body. 0.6 is Box2D's default, used by its
+    /// benchmarks, and is what lets a pyramid stand.
+    Scalar friction = 0.6;
+    /// Coefficient of restitution e of every body. 0: stacks should settle, not bounce.
+    Scalar restitution = 0;
+    /// The world's fixed step h, s (1/240 s, the Impetus default).
+    Scalar timeStep = constants::kDefaultTimeStep;
+};
+
+/// Angular velocity at which the benchmark turns the container of makeRotatingBoxWithCircles,
+/// rad/s, counter-clockwise. 0.25 rad/s is a slow tumble (one turn in 25 s) that keeps the
+/// circles rolling over each other rather than flung against the walls.
+inline constexpr Scalar kRotatingContainerAngularVelocity = 0.25;
+
+/// Box2D's pyramid: 1 m × 1 m boxes, `base` in the bottom row and one fewer in each row above
+/// (base·(base+1)/2 boxes, 5050 for base 100), each row centred on the one below so that every
+/// box rests exactly (gap 0) on two below it, and the bottom row exactly on a fixed ground box
+/// 2·base m × 1 m whose top is at y = 0. The pyramid is centred on x = 0.
+/// Body order: the ground, then the rows from the bottom up, each from left to right; the last
+/// body is the top box. Precondition: base ≥ 1.
+World makePyramid(int base, const SceneOptions& options = {});
+
+/// Box2D's "many pyramids": countY rows of countX pyramids of makePyramid(base) shape. Each row
+/// stands on its own fixed ground box; pyramids in a row are base + 2 m apart (a 2 m gap), rows
+/// are base + 3 m apart (2 m clear above the top box), so that no two pyramids touch. Row 0's
+/// ground has its top at y = 0, and the scene is centred on x = 0.
+/// Body order: the countY grounds from the bottom up, then the pyramids row by row from the bottom
+/// and left to right within a row, each pyramid in makePyramid's order (rows bottom up, left to
+/// right). So pyramid p (0-based in that order) ends with its top box at index
+/// countY + (p + 1)·base·(base + 1)/2 − 1. Preconditions: countX, countY, base ≥ 1.
+World makePyramidGrid(int countX, int countY, int base, const SceneOptions& options = {});
+
+/// `count` random convex polygons (3–8 vertices on a circle of radius 0.15–0.4 m, so 0.3–0.8 m
+/// across) at rest in a grid of 1 m cells, 40 columns wide (fewer when count < 40), the lowest row
+/// 1 m above the floor of an open-topped container. The container is three fixed boxes: a floor
+/// whose top is at y = 0 and two walls 1 m thick, standing on the floor 1 m clear of the grid on
+/// each side and rising 1 m above its top row. The same seed gives the same scene on every
+/// platform (the random numbers come straight from std::mt19937, not from a standard-library
+/// distribution).
+/// Body order: floor, left wall, right wall, then the polygons row by row from the bottom, left to
+/// right. Precondition: count ≥ 0.
+World makePolygonRain(int count, unsigned seed, const SceneOptions& options = {});
+
+/// `circles` discs of radius 0.25 m at rest in a square grid (0.6 m pitch) centred on the origin,
+/// inside a closed square container of four fixed walls 1 m thick, also centred on the origin,
+/// whose inside is about 1.5 times the grid's side.
+/// Box2D and Chipmunk make such a container a kinematic body turning at a constant angular
+/// velocity. Impetus has no kinematic bodies, so the walls are fixed, and a caller that wants the
+/// tumble turns them each step with turnFixedBodies(world, origin, kRotatingContainerAngularVelocity·h).
+/// Body order: bottom, right, top and left walls, then the circles row by row from the bottom,
+/// left to right. Precondition: circles ≥ 0.
+World makeRotatingBoxWithCircles(int circles = 2000, const SceneOptions& options = {});
+
+/// Rotates every fixed body of `world` counter-clockwise by `angleDelta` (rad) about `pivot` (m):
+/// position ← pivot + R(Δθ)·(position − pivot), angle ← angle + Δθ. This is a teleport, not a
+/// motion: the bodies' velocities stay zero, so a contact solver sees walls that jump a little
+/// each step rather than walls that move, and the bodies they push get no friction from the wall's
+/// surface speed (a kinematic body in Box2D or Chipmunk would give them that).
+void turnFixedBodies(World& world, const Vec2& pivot, Scalar angleDelta);
+
+/// A Newton's cradle without strings: `balls` discs of radius 0.5 m touching in a row along the x
+/// axis (centres at x = 0, 1, 2, … m; y = 0), in zero gravity. Ball 0 (the leftmost) moves towards
+/// the others at `speed` (m/s); the rest are at rest. Elastic and frictionless by default.
+/// Body order: left to right. Precondition: balls ≥ 1.
+World makeNewtonsCradle(int balls = 5, Scalar speed = 1.0,
+                        const SceneOptions& options = {.friction = 0, .restitution = 1});
+
+/// `count` 1 m × 1 m boxes stacked in a column at x = 0, each resting exactly on the one below
+/// (the box i has its centre at y = i + 0.5 m), on a fixed ground box 10 m × 1 m whose top is at
+/// y = 0. Body order: the ground, then the boxes from the bottom up. Precondition: count ≥ 0.
+World makeBoxStack(int count = 10, const SceneOptions& options = {});
+
+} // namespace impetus::model
