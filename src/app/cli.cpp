@@ -32,6 +32,7 @@ constexpr std::string_view kUsage =
     "  impetus-cli run SCENE.json [--time SECONDS | --steps N] [--dt SECONDS]\n"
     "                             [--integrator euler|semi-implicit-euler|rk4]\n"
     "                             [--csv FILE] [--sample-every N] [--summary FILE|-]\n"
+    "                             [--collision-log FILE]\n"
     "  impetus-cli validate SCENE.json\n"
     "\n"
     "run       steps the scene headless with its fixed time step (default: 10 s of simulated time)\n"
@@ -48,6 +49,7 @@ struct RunOptions {
     std::optional<std::string> csvPath;
     std::int64_t sampleEvery = 1;
     std::optional<std::string> summaryPath;
+    std::optional<std::string> collisionLogPath;
 };
 
 /// Thrown inside argument parsing only; caught in runCli and turned into exit code 2.
@@ -128,6 +130,8 @@ RunOptions parseRunOptions(std::span<const std::string> args)
             options.sampleEvery = parseCount(arg, value(), 1);
         } else if (arg == "--summary") {
             options.summaryPath = value();
+        } else if (arg == "--collision-log") {
+            options.collisionLogPath = value();
         } else if (arg.rfind("--", 0) == 0 || (arg.size() > 1 && arg[0] == '-')) {
             throw UsageError{"unknown option '" + arg + "'"};
         } else if (!haveScene) {
@@ -176,13 +180,34 @@ void writeCsvRows(std::ostream& csv, const model::World& world, double time)
     const std::string t = formatNumber(time);
     for (const model::Body& body : world.bodies) {
         const model::BodyState& s = body.state;
-        // Collision detection arrives with issue 3; until then no body is ever in contact.
-        const int colliding = 0;
+        const int colliding = body.colliding ? 1 : 0;
         csv << t << ',' << csvField(body.name) << ',' << formatNumber(s.position.x()) << ','
             << formatNumber(s.position.y()) << ',' << formatNumber(s.angle) << ','
             << formatNumber(s.velocity.x()) << ',' << formatNumber(s.velocity.y()) << ','
             << formatNumber(s.angularVelocity) << ',' << colliding << '\n';
     }
+}
+
+/// One CSV row per contact that began in the last step.
+void writeCollisionLogRows(std::ostream& log, const model::World& world,
+                           const std::vector<controller::CollisionEvent>& events, double time)
+{
+    for (const controller::CollisionEvent& e : events) {
+        log << formatNumber(time) << ',' << csvField(world.body(e.bodyA).name) << ','
+            << csvField(world.body(e.bodyB).name) << ',' << formatNumber(e.point.x()) << ','
+            << formatNumber(e.point.y()) << ',' << formatNumber(e.normal.x()) << ',' << formatNumber(e.normal.y())
+            << ',' << formatNumber(e.normalImpulse) << ',' << formatNumber(e.normalSpeedBefore) << ','
+            << formatNumber(e.normalSpeedAfter) << '\n';
+    }
+}
+
+/// Opens an output file for writing, reporting failure on `err`.
+bool openOutput(std::ofstream& file, const std::string& path, std::string_view what, std::ostream& err)
+{
+    file.open(path, std::ios::out | std::ios::trunc);
+    if (!file)
+        err << "impetus-cli run: cannot write the " << what << " file '" << path << "'\n";
+    return static_cast<bool>(file);
 }
 
 /// The name of the first body with a non-finite state, if any.
@@ -206,7 +231,7 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
     nlohmann::ordered_json summary;
     summary["time"] = time;
     summary["steps"] = steps;
-    summary["collisions"] = 0; // contact-begin events: collision detection arrives with issue 3
+    summary["collisions"] = world.collisionCount;
     summary["energy"] = {{"kinetic", energy.kinetic},
                          {"potential", energy.potential},
                          {"elastic", energy.elastic},
@@ -223,8 +248,8 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
         b["angularVelocity"] = body.state.angularVelocity;
         b["mass"] = body.mass;
         b["inertia"] = body.inertia;
-        b["collisions"] = 0;
-        b["colliding"] = false;
+        b["collisions"] = body.collisionCount;
+        b["colliding"] = body.colliding;
         b["ellipses"] = 0; // soft mode's ellipse grid arrives with issue 5
         bodies.push_back(std::move(b));
     }
@@ -321,13 +346,16 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
 
     std::ofstream csv;
     if (options.csvPath) {
-        csv.open(*options.csvPath, std::ios::out | std::ios::trunc);
-        if (!csv) {
-            err << "impetus-cli run: cannot write the CSV file '" << *options.csvPath << "'\n";
+        if (!openOutput(csv, *options.csvPath, "CSV", err))
             return kExitRuntimeFailure;
-        }
         csv << "time,body,x,y,angle,vx,vy,angularVelocity,colliding\n";
         writeCsvRows(csv, world, 0.0);
+    }
+    std::ofstream collisionLog;
+    if (options.collisionLogPath) {
+        if (!openOutput(collisionLog, *options.collisionLogPath, "collision log", err))
+            return kExitRuntimeFailure;
+        collisionLog << "time,bodyA,bodyB,x,y,nx,ny,normalImpulse,normalSpeedBefore,normalSpeedAfter\n";
     }
 
     controller::Simulation simulation;
@@ -343,14 +371,18 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
             }
             if (csv.is_open() && step % options.sampleEvery == 0)
                 writeCsvRows(csv, world, time);
+            if (collisionLog.is_open())
+                writeCollisionLogRows(collisionLog, world, simulation.events(), time);
             progress.update(step);
         }
     }
 
-    if (csv.is_open()) {
-        csv.flush();
-        if (!csv) {
-            err << "impetus-cli run: writing the CSV file '" << *options.csvPath << "' failed\n";
+    for (auto [file, path] : {std::pair{&csv, &options.csvPath}, std::pair{&collisionLog, &options.collisionLogPath}}) {
+        if (!file->is_open())
+            continue;
+        file->flush();
+        if (!*file) {
+            err << "impetus-cli run: writing '" << **path << "' failed\n";
             return kExitRuntimeFailure;
         }
     }

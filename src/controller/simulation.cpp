@@ -1,5 +1,7 @@
 #include "controller/simulation.h"
 
+#include "controller/narrow_phase.h"
+
 #include <chrono>
 
 namespace impetus::controller {
@@ -15,8 +17,9 @@ double millisecondsSince(Clock::time_point start)
 
 } // namespace
 
-Simulation::Simulation()
-    : m_euler(makeIntegrator(model::IntegratorKind::Euler))
+Simulation::Simulation(SolverSettings settings)
+    : m_settings(settings)
+    , m_euler(makeIntegrator(model::IntegratorKind::Euler))
     , m_semiImplicitEuler(makeIntegrator(model::IntegratorKind::SemiImplicitEuler))
     , m_rk4(makeIntegrator(model::IntegratorKind::Rk4))
 {
@@ -35,19 +38,158 @@ Integrator& Simulation::integratorFor(model::IntegratorKind kind)
     return *m_rk4;
 }
 
+void Simulation::collide(const model::World& world, Scalar h)
+{
+    const Clock::time_point broadStart = Clock::now();
+    // Each body's speculative margin: how far its surface can move in one step (translation,
+    // rotation at its bounding radius, and what its acceleration adds), plus a constant margin so
+    // that resting contacts exist before the surfaces touch.
+    m_margins.assign(world.bodies.size(), constants::kSpeculativeMargin);
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (body.fixed)
+            continue;
+        const model::BodyState& s = body.state;
+        const BodyDerivative& d = m_startDerivatives[i];
+        m_margins[i] += h * (s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius) +
+                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+    }
+    m_colliders.build(world, m_margins);
+    const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
+    m_proxies.resize(pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+        m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
+    m_broadPhase.findPairs(m_proxies, m_pairs);
+    m_profile.broadMs = millisecondsSince(broadStart);
+
+    const Clock::time_point narrowStart = Clock::now();
+    m_manifolds.clear();
+    for (const ProxyPair& pair : m_pairs) {
+        const ColliderPiece& a = pieces[pair.first];
+        const ColliderPiece& b = pieces[pair.second];
+        const Manifold manifold = controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second),
+                                                      m_margins[a.body] + m_margins[b.body]);
+        if (manifold.count > 0)
+            m_manifolds.push_back({a.body, a.piece, b.body, b.piece, manifold});
+    }
+    m_profile.narrowMs = millisecondsSince(narrowStart);
+}
+
+void Simulation::integratePositions(model::World& world, Scalar h)
+{
+    // Two ways to finish a body's step (docs/physics.md, "Contacts"):
+    //  - bodies held by contact forces or joints: semi-implicit Euler, x = x₀ + h·v, the
+    //    position that matches the constrained velocity (a resting body stays exactly at rest);
+    //  - all others keep the integrator's position (RK4 stays exact in free flight), moved by
+    //    what their impacts changed after the time of impact.
+    // Either way an impact at τ·h moves the body only for the remaining (1 − τ)·h.
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        model::Body& body = world.bodies[i];
+        SolverBody& sb = m_bodies[i];
+        if (body.fixed)
+            continue;
+        const model::BodyState& start = m_startStates[i];
+        model::BodyState& s = body.state;
+        if (sb.hadContactForce) {
+            s.position = start.position + h * (sb.velocity - sb.impactLateVelocity);
+            s.angle = start.angle + h * (sb.angularVelocity - sb.impactLateAngularVelocity);
+        } else if (sb.hadImpact) {
+            // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
+            s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);
+            s.angle += h * (sb.angularVelocity - s.angularVelocity - sb.impactLateAngularVelocity);
+        }
+        s.velocity = sb.velocity;
+        s.angularVelocity = sb.angularVelocity;
+        sb.position = s.position;
+        sb.angle = s.angle;
+    }
+}
+
 void Simulation::step(model::World& world)
 {
     const Clock::time_point stepStart = Clock::now();
     const Scalar h = world.settings.timeStep;
+    const std::size_t n = world.bodies.size();
 
-    // Phase 1: smooth forces (gravity, springs, drag) integrated over the whole world state.
+    // Phase 0: the start of the step, as the solvers see it.
+    m_startStates.resize(n);
+    m_bodies.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Body& body = world.bodies[i];
+        m_startStates[i] = body.state;
+        SolverBody& sb = m_bodies[i];
+        sb = SolverBody{};
+        sb.position = body.state.position;
+        sb.angle = body.state.angle;
+        sb.invMass = body.invMass;
+        sb.invInertia = body.invInertia;
+        if (!body.fixed) {
+            sb.velocity = body.state.velocity;
+            sb.angularVelocity = body.state.angularVelocity;
+        }
+    }
+    computeDerivatives(world, m_startStates, m_startDerivatives);
+
+    // Phase 1: collision detection at the start-of-step poses, with speculative margins.
+    collide(world, h);
+
+    // Phase 2: impacts, on the velocities from before this step's forces.
+    const Clock::time_point solveStart = Clock::now();
+    m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives);
+    m_jointSolver.prepare(world, m_bodies);
+    m_contactSolver.solveImpacts(m_bodies, h);
+    double solveMs = millisecondsSince(solveStart);
+
+    // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
     integratorFor(world.settings.integrator).integrate(world, h);
     m_profile.integrateMs = millisecondsSince(integrateStart);
 
-    // Phase 2: the clock.
+    // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
+    const Clock::time_point velocityStart = Clock::now();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (world.bodies[i].fixed)
+            continue;
+        SolverBody& sb = m_bodies[i];
+        sb.velocity += world.bodies[i].state.velocity - m_startStates[i].velocity;
+        sb.angularVelocity += world.bodies[i].state.angularVelocity - m_startStates[i].angularVelocity;
+    }
+    m_jointSolver.warmStart(m_bodies);
+    m_contactSolver.warmStart(m_bodies);
+    for (int i = 0; i < m_settings.velocityIterations; ++i) {
+        m_jointSolver.solveVelocities(m_bodies, h);
+        m_contactSolver.solveVelocities(m_bodies, h);
+    }
+
+    // Phase 5: positions, then position correction (moves bodies, never touches velocities).
+    integratePositions(world, h);
+    for (int i = 0; i < m_settings.positionIterations; ++i) {
+        const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
+        const bool contactsOk = m_contactSolver.solvePositions(m_bodies);
+        if (jointsOk && contactsOk)
+            break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (world.bodies[i].fixed)
+            continue;
+        world.bodies[i].state.position = m_bodies[i].position;
+        world.bodies[i].state.angle = m_bodies[i].angle;
+    }
+    solveMs += millisecondsSince(velocityStart);
+    m_profile.solveMs = solveMs;
+
+    // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start).
     world.time += h;
     ++world.stepCount;
+    const std::vector<model::ContactRecord> previous = std::move(world.contacts);
+    m_events = updateCollisionState(world, m_contactSolver, m_bodies, previous);
+    m_jointSolver.storeImpulses(world);
+    for (model::Joint& joint : world.joints) {
+        // Keep a pin's world anchor where the hinge now is, so that saving mid-run writes a scene
+        // that loads to this state.
+        if (joint.type == model::JointType::Pin)
+            joint.worldAnchor = world.body(joint.bodyA).worldPoint(joint.anchorA);
+    }
 
     m_profile.totalMs = millisecondsSince(stepStart);
 }

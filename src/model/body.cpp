@@ -21,6 +21,16 @@ void setPolygonGeometry(BodyGeometry& geometry, std::span<const Vec2> userVertic
         for (Vec2& v : piece)
             v -= offset;
     }
+    for (const auto& piece : geometry.convexPieces) {
+        std::vector<Vec2> normals;
+        normals.reserve(piece.size());
+        for (std::size_t i = 0; i < piece.size(); ++i) {
+            const Vec2 edge = piece[(i + 1) % piece.size()] - piece[i];
+            // Counter-clockwise winding puts the outside on the right of each edge.
+            normals.push_back(Vec2(edge.y(), -edge.x()).normalized());
+        }
+        geometry.pieceNormals.push_back(std::move(normals));
+    }
     for (const Vec2& v : geometry.outline)
         geometry.boundingRadius = std::max(geometry.boundingRadius, v.norm());
 }

@@ -68,6 +68,9 @@ struct BodyGeometry {
     std::vector<Vec2> outline;
     /// Convex pieces of a box or polygon (one piece when convex), counter-clockwise, body frame.
     std::vector<std::vector<Vec2>> convexPieces;
+    /// Outward unit normal of each edge of each convex piece: pieceNormals[k][i] belongs to the
+    /// edge from convexPieces[k][i] to convexPieces[k][i+1].
+    std::vector<std::vector<Vec2>> pieceNormals;
     /// Radius of the smallest origin-centred circle that holds the shape, m.
     Scalar boundingRadius = 0;
     bool operator==(const BodyGeometry&) const = default;
@@ -92,6 +95,10 @@ struct Body {
     Scalar invMass = 0; ///< 1/mass, or 0 for a fixed body, 1/kg
     Scalar invInertia = 0; ///< 1/inertia, or 0 for a fixed body, 1/(kg·m²)
     BodyGeometry geometry;
+
+    // Collision state, kept up to date by the simulation; not part of the scene file.
+    bool colliding = false; ///< in contact with another body at the end of the last step
+    std::int64_t collisionCount = 0; ///< contact-begin events this body has taken part in
 
     bool operator==(const Body&) const = default;
 

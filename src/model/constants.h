@@ -23,4 +23,113 @@ inline constexpr Scalar kRelativePointTolerance = 1e-9;
 /// Same reasoning as kRelativePointTolerance, squared because it is an area.
 inline constexpr Scalar kRelativeAreaTolerance = 1e-12;
 
+// ---- Contacts and joints (controller/contact_solver, joint_solver) -------------------------
+
+/// Penetration the position correction leaves alone, m. Resting bodies sink this far into each
+/// other at most, so that contacts stay active from step to step instead of flickering. 0.5 mm is
+/// below a pixel at any classroom zoom ("no visible skin") yet keeps 100-box stacks quiet.
+inline constexpr Scalar kLinearSlop = 0.0005;
+
+/// Fraction of the remaining penetration (beyond the slop) removed per position iteration. 0.2 is
+/// the usual choice for non-linear Gauss–Seidel: larger overshoots and jitters in deep stacks.
+inline constexpr Scalar kPositionCorrectionFactor = 0.2;
+
+/// Largest position correction in one iteration, m. Keeps a deep overlap (a body dropped inside
+/// another) from being expelled in a single violent jump.
+inline constexpr Scalar kMaxPositionCorrection = 0.2;
+
+/// Speculative margin every pair gets even at rest, m: contacts are created this far before the
+/// surfaces touch, so resting and slow bodies never start a step already overlapping.
+inline constexpr Scalar kSpeculativeMargin = 4 * kLinearSlop;
+
+/// Approach speeds below this are contact, not impact: no bounce, m/s. Tiny (1 cm/s) because the
+/// solver measures approach with the velocity from before gravity's step is added, so a resting
+/// body approaches at ~0 m/s, not at g·h; a bouncing ball therefore settles only when its bounces
+/// are below ~5 µm high.
+inline constexpr Scalar kRestitutionThreshold = 0.01;
+
+/// A contact point within this distance (or carrying impulse) counts as touching, m: the same
+/// tolerance the position correction allows.
+inline constexpr Scalar kTouchDistance = kLinearSlop;
+
+/// Sequential-impulse iterations per step for velocities, and non-linear Gauss–Seidel iterations
+/// for positions. Box2D's defaults, which keep a 10-box stack standing at 60 Hz; at 240 Hz they
+/// are generous.
+inline constexpr int kVelocityIterations = 8;
+inline constexpr int kPositionIterations = 3;
+
+/// The impact pass resolves at most this many impacts per contact point per step, so a chain of
+/// bodies in mutual contact (Newton's cradle, a struck stack) ends in bounded time; what is left
+/// is handled by the regular velocity iterations.
+inline constexpr int kMaxImpactsPerPoint = 8;
+
+// ---- Broad phase (controller/broad_phase) -----------------------------------------------------
+
+/// The broad phase re-sorts last step's order with insertion sort, and falls back to std::sort
+/// once insertion sort has moved more than this many entries per proxy. Insertion sort costs
+/// n + (entries moved); std::sort costs about n·log2(n) comparisons, 12–14 per proxy for the
+/// 5,000–20,000 proxies of the benchmark scenes, so past a few moves per proxy it stops paying.
+inline constexpr Scalar kBroadPhaseInsertionMovesPerProxy = 4;
+
+/// The broad phase sweeps strips across the sweep axis separately, each this many mean box sizes
+/// high (measured on the other axis). Lower makes more boxes straddle two strips and more strips
+/// to visit; higher lets more boxes that are far apart on the other axis meet in the sweep. 4 was
+/// fastest on the benchmark pyramids and flat within a factor 2 either way (bench/broad_phase_bench).
+inline constexpr Scalar kBroadPhaseStripHeight = 4;
+
+/// Below this many proxies the broad phase runs one plain sweep: strips would save less than they
+/// cost to set up.
+inline constexpr int kBroadPhaseMinProxiesForStrips = 64;
+
+// --- Narrow phase --------------------------------------------------------------------------------
+
+/// Reference-face hysteresis of polygon–polygon collision, relative to the smaller polygon's size
+/// (its largest centroid-to-vertex distance). B's face becomes the reference face only when its SAT
+/// separation beats A's by more than this fraction; otherwise A's face is kept. Without it, two
+/// nearly parallel faces (a box resting on a box) swap roles from step to step on rounding noise,
+/// the feature ids change and warm starting is lost. 5e-4 is 0.5 mm on a 1 m box, the same order
+/// as Box2D's 0.1 × linear slop, and costs at most that much underestimated penetration.
+inline constexpr Scalar kReferenceFaceRelativeTolerance = 5e-4;
+
+/// Two directions whose angle is below this, rad, are parallel: a polygon edge that is this close
+/// to perpendicular to the contact normal is a face contact rather than a vertex contact. Far
+/// below any angle a user can draw, far above the ~1e-16 rad of double rounding.
+inline constexpr Scalar kParallelAngleTolerance = 1e-9;
+
+/// GJK and EPA stop when the support point along the current direction improves the distance
+/// bound by less than this fraction of the shapes' size (m per m). Convergence on curved shapes is
+/// only linear, and the normal converges as the square root of this gap, so the answer is then
+/// polished by a 1-D search (see kContactNormalSearch*); 1e-10 keeps GJK under 20 iterations and
+/// EPA near 20 on average on random ellipse pairs, while putting the normal well inside the
+/// search bracket.
+inline constexpr Scalar kGjkEpaRelativeTolerance = 1e-10;
+
+/// Iteration cap of GJK (distance). In 2D it converges in a handful of iterations on polygons and
+/// in at most 18 on random ellipse pairs at kGjkEpaRelativeTolerance; the cap only guards
+/// degenerate input.
+inline constexpr int kGjkMaxIterations = 100;
+
+/// Iteration cap of EPA (penetration). Each iteration adds one vertex to the polytope: about 20 on
+/// average for random ellipse pairs, up to ~175 for round ellipses overlapping almost concentrically,
+/// where the Minkowski difference is nearly a circle about the origin and every edge is nearly the
+/// closest. There the separation is flat in the normal, so stopping at the cap costs no accuracy in
+/// the separation (the normal is then ill-defined anyway); the cap bounds the O(n²) cost.
+inline constexpr int kEpaMaxIterations = 200;
+
+/// Half-width, rad, of the bracket around the GJK/EPA normal in which the contact normal of a
+/// curved pair is refined (bisection on the slope of the separation along the normal). It must
+/// cover GJK/EPA's normal error, √(8·gap/ρ) for a surface of curvature radius ρ, which is below
+/// 2e-3 rad even for an ellipse with a 1:100 axis ratio; 1e-2 rad is small enough that no second
+/// local maximum of the separation lies inside for any shape a user draws.
+inline constexpr Scalar kContactNormalSearchHalfAngle = 1e-2;
+
+/// The refinement of the contact normal stops when its bracket is narrower than this, rad. At
+/// 1e-12 rad the contact point on a 1 m curvature radius moves 1e-12 m, below the 1e-6 m promised
+/// for ellipses by six orders of magnitude.
+inline constexpr Scalar kContactNormalSearchTolerance = 1e-12;
+
+/// Iteration cap of the normal refinement: halving 2·kContactNormalSearchHalfAngle down to
+/// kContactNormalSearchTolerance takes 35 steps; the cap only guards against NaN brackets.
+inline constexpr int kContactNormalSearchMaxIterations = 100;
+
 } // namespace impetus::constants

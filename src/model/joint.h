@@ -30,6 +30,9 @@ struct Joint {
     Vec2 anchorB = Vec2::Zero();
     /// Rod only: the distance the rod keeps, derived at load from the anchors, m.
     Scalar length = 0;
+    /// Solver state, not part of the scene file: the impulse the joint applied in the last step
+    /// (pin: the 2D impulse; rod: x holds the impulse along the rod), N·s. Warm-starts the next.
+    Vec2 impulse = Vec2::Zero();
     bool operator==(const Joint&) const = default;
 };
 

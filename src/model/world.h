@@ -9,6 +9,7 @@
 #include "model/scalar.h"
 #include "model/spring.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -38,6 +39,22 @@ struct WorldSettings {
     bool operator==(const WorldSettings&) const = default;
 };
 
+/// Two convex pieces that were in contact, or close enough for a speculative contact, at the end
+/// of the last step. Remembered so that the next step can warm-start its solver with these
+/// impulses and tell a contact that begins from one that goes on.
+struct ContactRecord {
+    BodyId bodyA; ///< bodyA.index < bodyB.index
+    std::uint32_t pieceA = 0; ///< convex piece of body A (0 for round shapes)
+    BodyId bodyB;
+    std::uint32_t pieceB = 0;
+    std::uint8_t pointCount = 0; ///< 1 or 2
+    std::array<std::uint32_t, 2> featureIds{}; ///< which features touched, per point
+    std::array<Scalar, 2> normalImpulses{}; ///< accumulated normal impulse per point, N·s
+    std::array<Scalar, 2> tangentImpulses{}; ///< accumulated friction impulse per point, N·s
+    bool touching = false; ///< really touching (not only speculative)
+    bool operator==(const ContactRecord&) const = default;
+};
+
 /// A whole scene and its simulated time.
 struct World {
     WorldSettings settings;
@@ -46,6 +63,9 @@ struct World {
     std::vector<Joint> joints;
     Scalar time = 0; ///< simulated time since the scene was loaded, s
     std::int64_t stepCount = 0; ///< fixed steps taken since the scene was loaded
+    std::int64_t collisionCount = 0; ///< contact-begin events since the scene was loaded
+    /// Contacts at the end of the last step, sorted by (bodyA, pieceA, bodyB, pieceB).
+    std::vector<ContactRecord> contacts;
 
     bool operator==(const World&) const = default;
 

@@ -22,6 +22,42 @@ inline model::Body makeBall(std::string name, Scalar mass, Scalar radius, Vec2 p
     return body;
 }
 
+/// A dynamic box of width × height and mass m at `position`, turned by `angle`.
+inline model::Body makeBox(std::string name, Scalar mass, Scalar width, Scalar height, Vec2 position,
+                           Scalar angle = 0)
+{
+    model::Body body;
+    body.name = std::move(name);
+    body.shape = model::Box{width, height};
+    body.massSpec = {model::MassMode::Mass, mass};
+    body.state.position = position;
+    body.state.angle = angle;
+    body.updateDerived();
+    return body;
+}
+
+/// A fixed box whose top face is centred at `topCentre`, turned by `angle` about that point.
+inline model::Body makeGround(std::string name, Scalar width, Scalar thickness, Vec2 topCentre = Vec2::Zero(),
+                              Scalar angle = 0)
+{
+    model::Body body;
+    body.name = std::move(name);
+    body.shape = model::Box{width, thickness};
+    body.fixed = true;
+    body.state.position = topCentre + rotate(Vec2(0, -thickness / 2), angle);
+    body.state.angle = angle;
+    body.updateDerived();
+    return body;
+}
+
+/// Sets a body's material.
+inline model::Body withMaterial(model::Body body, Scalar restitution, Scalar friction)
+{
+    body.material.restitution = restitution;
+    body.material.friction = friction;
+    return body;
+}
+
 /// A world with no gravity and the given integrator and step.
 inline model::World makeEmptyWorld(model::IntegratorKind integrator, Scalar timeStep, Vec2 gravity = Vec2::Zero())
 {

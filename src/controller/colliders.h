@@ -1,0 +1,51 @@
+#pragma once
+/// \file colliders.h
+/// The world-space collision shapes of every body for one step, in flat arrays.
+
+#include "controller/collision_types.h"
+#include "controller/narrow_phase.h"
+#include "model/scalar.h"
+#include "model/world.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impetus::controller {
+
+/// One convex piece of one body, placed in the world.
+struct ColliderPiece {
+    enum class Kind : std::uint8_t { Polygon, Circle, Ellipse };
+    Kind kind = Kind::Polygon;
+    std::uint32_t body = 0; ///< index into World::bodies
+    std::uint32_t piece = 0; ///< index into the body's convex pieces (0 for round shapes)
+    std::uint32_t firstVertex = 0; ///< polygon: first vertex in ColliderSet::vertices
+    std::uint32_t vertexCount = 0; ///< polygon: number of vertices
+    Vec2 center = Vec2::Zero(); ///< polygon centroid, or circle / ellipse centre, m
+    Scalar radiusX = 0; ///< circle radius, or ellipse semi-axis along its x, m
+    Scalar radiusY = 0; ///< ellipse semi-axis along its y, m
+    Scalar c = 1; ///< ellipse: cos(angle)
+    Scalar s = 0; ///< ellipse: sin(angle)
+};
+
+/// Every body's convex pieces in world coordinates, with bounding boxes enlarged by each body's
+/// speculative margin. Rebuilt each step; keeps its buffers.
+class ColliderSet {
+public:
+    /// Places every piece of every body at its current state. `margins[i]` (m) enlarges the boxes
+    /// of body i's pieces: how far the body may travel relative to anything in one step.
+    void build(const model::World& world, const std::vector<Scalar>& margins);
+
+    const std::vector<ColliderPiece>& pieces() const { return m_pieces; }
+    const std::vector<Aabb>& boxes() const { return m_boxes; }
+
+    /// Piece i as a shape the narrow phase takes.
+    ConvexShape shape(std::uint32_t i) const;
+
+private:
+    std::vector<ColliderPiece> m_pieces;
+    std::vector<Aabb> m_boxes;
+    std::vector<Vec2> m_vertices;
+    std::vector<Vec2> m_normals;
+};
+
+} // namespace impetus::controller

@@ -1,0 +1,98 @@
+#include "controller/collision_events.h"
+
+#include "model/constants.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace impetus::controller {
+
+namespace {
+
+using BodyPair = std::pair<std::uint32_t, std::uint32_t>;
+
+/// A contact touches when a point is within the touch distance, or when any impulse acted on it
+/// this step (a speculative contact that stopped a fast body a hair before the surface touched).
+bool isTouching(const ContactConstraint& c)
+{
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+        if (p.separation <= constants::kTouchDistance || p.normalImpulse > 0 || p.impactImpulse > 0)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+std::vector<CollisionEvent> updateCollisionState(model::World& world, const ContactSolver& contacts,
+                                                 std::span<const SolverBody> bodies,
+                                                 const std::vector<model::ContactRecord>& previous)
+{
+    // Body pairs that touched at the end of the last step (sorted, since records are).
+    std::vector<BodyPair> before;
+    for (const model::ContactRecord& r : previous) {
+        if (r.touching)
+            before.emplace_back(r.bodyA.index, r.bodyB.index);
+    }
+    before.erase(std::unique(before.begin(), before.end()), before.end());
+
+    for (model::Body& body : world.bodies)
+        body.colliding = false;
+
+    const std::vector<ContactConstraint>& constraints = contacts.constraints();
+    std::vector<bool> touching(constraints.size(), false);
+    std::vector<CollisionEvent> events;
+    for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
+        const ContactConstraint& c = constraints[ci];
+        touching[ci] = isTouching(c);
+        if (!touching[ci])
+            continue;
+        world.bodies[c.bodyA].colliding = true;
+        world.bodies[c.bodyB].colliding = true;
+
+        const BodyPair pair(c.bodyA, c.bodyB);
+        if (std::binary_search(before.begin(), before.end(), pair))
+            continue;
+        // A pair of bodies may touch through several pieces: the first touching one opens the
+        // event and the others add their impulse to it.
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        const ContactConstraintPoint& p = c.points[0];
+        Scalar impulse = 0;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& q = c.points[static_cast<std::size_t>(i)];
+            impulse += q.normalImpulse + q.impactImpulse;
+        }
+        const auto open = std::find_if(events.begin(), events.end(), [&](const CollisionEvent& e) {
+            return e.bodyA.index == c.bodyA && e.bodyB.index == c.bodyB;
+        });
+        if (open != events.end()) {
+            open->normalImpulse += impulse;
+            continue;
+        }
+        CollisionEvent e;
+        e.time = world.time;
+        e.bodyA = model::BodyId{c.bodyA};
+        e.bodyB = model::BodyId{c.bodyB};
+        e.point = a.position + rotate(p.localAnchorA, a.angle);
+        e.normal = c.normal;
+        e.normalImpulse = impulse;
+        e.normalSpeedBefore = p.impacted ? p.approachVelocity : p.startNormalVelocity;
+        const Vec2 rA = e.point - a.position;
+        const Vec2 rB = e.point - b.position;
+        e.normalSpeedAfter =
+            (b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA)).dot(c.normal);
+        events.push_back(e);
+    }
+
+    for (const CollisionEvent& e : events) {
+        ++world.bodies[e.bodyA.index].collisionCount;
+        ++world.bodies[e.bodyB.index].collisionCount;
+        ++world.collisionCount;
+    }
+    world.contacts = contacts.records(touching);
+    return events;
+}
+
+} // namespace impetus::controller

@@ -1,0 +1,36 @@
+#pragma once
+/// \file collision_events.h
+/// What the contacts of a step mean to a student: which bodies are colliding (drawn red), which
+/// contacts began (counted), and a log of each new collision.
+
+#include "controller/contact_solver.h"
+#include "model/world.h"
+
+#include <span>
+#include <vector>
+
+namespace impetus::controller {
+
+/// A contact between two bodies that began in this step: they were not touching at the end of
+/// the last step and are now.
+struct CollisionEvent {
+    Scalar time = 0; ///< simulated time at the end of the step, s
+    model::BodyId bodyA; ///< bodyA.index < bodyB.index
+    model::BodyId bodyB;
+    Vec2 point = Vec2::Zero(); ///< a contact point (the first of the first touching pair of pieces), m
+    Vec2 normal = Vec2::Zero(); ///< unit, from A to B
+    Scalar normalImpulse = 0; ///< total normal impulse between the two bodies this step, N·s
+    Scalar normalSpeedBefore = 0; ///< relative normal velocity before (< 0: approaching), m/s
+    Scalar normalSpeedAfter = 0; ///< relative normal velocity after the step (> 0: separating), m/s
+};
+
+/// Decides which contacts touch, sets each body's `colliding` flag, counts contact-begin events
+/// (per pair of bodies, whatever the number of pieces or points) into the bodies' and the world's
+/// collision counts, and stores the step's contact records in world.contacts.
+/// `bodies` hold the velocities after the solve. `previous` are the last step's records.
+/// Returns the events of the step in pair order.
+std::vector<CollisionEvent> updateCollisionState(model::World& world, const ContactSolver& contacts,
+                                                 std::span<const SolverBody> bodies,
+                                                 const std::vector<model::ContactRecord>& previous);
+
+} // namespace impetus::controller

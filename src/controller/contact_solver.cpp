@@ -1,0 +1,506 @@
+#include "controller/contact_solver.h"
+
+#include "model/constants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impetus::controller {
+
+namespace {
+
+/// The 2×2 block solve is used only when K's condition number stays below this: two contact
+/// points that (nearly) coincide make K singular, and then the points are solved one at a time.
+constexpr Scalar kMaxBlockConditionNumber = 1000.0;
+
+/// The tangent of a contact: the normal turned clockwise, so (n, t) is a right-handed pair.
+Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
+
+Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+{
+    return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
+}
+
+/// Applies impulse P at the contact: −P on A, +P on B.
+void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    a.velocity -= a.invMass * impulse;
+    a.angularVelocity -= a.invInertia * cross(rA, impulse);
+    b.velocity += b.invMass * impulse;
+    b.angularVelocity += b.invInertia * cross(rB, impulse);
+}
+
+/// The effective mass 1/K for an impulse along `direction` at rA, rB; 0 when nothing can move.
+Scalar effectiveMass(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& direction)
+{
+    const Scalar rnA = cross(rA, direction);
+    const Scalar rnB = cross(rB, direction);
+    const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+    return k > 0 ? 1 / k : 0;
+}
+
+/// Time t in (0, h] at which a gap s closes under relative normal velocity vn and acceleration a:
+/// the smallest root of s + vn·t + ½a·t² = 0. Negative when the gap does not close within h.
+Scalar timeToClose(Scalar s, Scalar vn, Scalar a, Scalar h)
+{
+    // Evaluate at h first: most gaps stay open, and this keeps the common case cheap.
+    if (s + vn * h + 0.5 * a * h * h > 0) {
+        // Still open at h; it may have closed and reopened inside the step only if it turns
+        // around, i.e. vn < 0 < a. Check the minimum of the parabola.
+        if (!(vn < 0 && a > 0))
+            return -1;
+        const Scalar tMin = -vn / a;
+        if (tMin > h || s + vn * tMin + 0.5 * a * tMin * tMin > 0)
+            return -1;
+    }
+    if (std::abs(a) < 1e-12)
+        return vn < 0 ? -s / vn : -1;
+    // Stable form of the smaller positive root of ½a·t² + vn·t + s = 0.
+    const Scalar disc = vn * vn - 2 * a * s;
+    if (disc < 0)
+        return -1;
+    const Scalar q = -(vn - std::sqrt(disc)); // vn < 0 on the approaching branch, so q > 0
+    const Scalar t1 = q / a;
+    const Scalar t2 = 2 * s / q;
+    Scalar t = std::numeric_limits<Scalar>::infinity();
+    for (const Scalar candidate : {t1, t2}) {
+        if (candidate > 0 && candidate < t)
+            t = candidate;
+    }
+    return t <= h ? t : -1;
+}
+
+/// Identifies a pair of pieces; lexicographic order is the broad phase's pair order.
+using PairKey = std::array<std::uint32_t, 4>;
+
+PairKey keyOf(const model::ContactRecord& r) { return {r.bodyA.index, r.pieceA, r.bodyB.index, r.pieceB}; }
+
+/// Solves the complementarity problem x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0 for one or two points by
+/// enumerating the active sets (exact for two points). Returns x.
+Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Vector2d& b, int count)
+{
+    if (count == 1) {
+        const Scalar x = k(0, 0) > 0 ? std::max(0.0, -b(0) / k(0, 0)) : 0.0;
+        return Eigen::Vector2d(x, 0);
+    }
+    const Scalar det = k(0, 0) * k(1, 1) - k(0, 1) * k(1, 0);
+    if (std::abs(det) > 0) {
+        const Eigen::Vector2d x = -k.inverse() * b;
+        if (x(0) >= 0 && x(1) >= 0)
+            return x;
+    }
+    if (k(0, 0) > 0) {
+        const Scalar x1 = -b(0) / k(0, 0);
+        if (x1 >= 0 && k(1, 0) * x1 + b(1) >= 0)
+            return Eigen::Vector2d(x1, 0);
+    }
+    if (k(1, 1) > 0) {
+        const Scalar x2 = -b(1) / k(1, 1);
+        if (x2 >= 0 && k(0, 1) * x2 + b(0) >= 0)
+            return Eigen::Vector2d(0, x2);
+    }
+    return Eigen::Vector2d::Zero();
+}
+
+} // namespace
+
+Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
+
+Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
+
+void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
+                            std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives)
+{
+    m_constraints.clear();
+    m_constraints.reserve(manifolds.size());
+    const std::vector<model::ContactRecord>& previous = world.contacts;
+    std::size_t cursor = 0;
+
+    for (const PairManifold& pm : manifolds) {
+        if (pm.manifold.count == 0)
+            continue;
+        ContactConstraint c;
+        c.bodyA = pm.bodyA;
+        c.pieceA = pm.pieceA;
+        c.bodyB = pm.bodyB;
+        c.pieceB = pm.pieceB;
+        c.normal = pm.manifold.normal;
+        c.pointCount = pm.manifold.count;
+        const model::Body& bodyA = world.bodies[c.bodyA];
+        const model::Body& bodyB = world.bodies[c.bodyB];
+        c.friction = mixFriction(bodyA.material.friction, bodyB.material.friction);
+        c.restitution = mixRestitution(bodyA.material.restitution, bodyB.material.restitution);
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        c.localNormalA = rotate(c.normal, -a.angle);
+
+        // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together.
+        const PairKey want{c.bodyA, c.pieceA, c.bodyB, c.pieceB};
+        while (cursor < previous.size() && keyOf(previous[cursor]) < want)
+            ++cursor;
+        const model::ContactRecord* match =
+            cursor < previous.size() && keyOf(previous[cursor]) == want ? &previous[cursor] : nullptr;
+
+        const Vec2 t = tangentOf(c.normal);
+        const BodyDerivative& da = derivatives[c.bodyA];
+        const BodyDerivative& db = derivatives[c.bodyB];
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPoint& mp = pm.manifold.points[static_cast<std::size_t>(i)];
+            ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+            p.id = mp.id;
+            p.separation = mp.separation;
+            p.rA = mp.point - a.position;
+            p.rB = mp.point - b.position;
+            const Vec2 surfaceA = mp.point - 0.5 * mp.separation * c.normal;
+            const Vec2 surfaceB = mp.point + 0.5 * mp.separation * c.normal;
+            p.localAnchorA = rotate(Vec2(surfaceA - a.position), -a.angle);
+            p.localAnchorB = rotate(Vec2(surfaceB - b.position), -b.angle);
+            p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
+            p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
+            // Relative acceleration of the two material points along the normal under the smooth
+            // forces (the centripetal terms are second order over one step and left out).
+            const Vec2 accA = da.acceleration + cross(da.angularAcceleration, p.rA);
+            const Vec2 accB = db.acceleration + cross(db.angularAcceleration, p.rB);
+            p.normalAcceleration = (accB - accA).dot(c.normal);
+            p.startNormalVelocity = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
+            if (match) {
+                for (std::size_t j = 0; j < match->pointCount; ++j) {
+                    if (match->featureIds[j] == p.id) {
+                        p.normalImpulse = match->normalImpulses[j];
+                        p.tangentImpulse = match->tangentImpulses[j];
+                    }
+                }
+            }
+        }
+
+        if (c.pointCount == 2) {
+            const ContactConstraintPoint& p1 = c.points[0];
+            const ContactConstraintPoint& p2 = c.points[1];
+            const Scalar rn1A = cross(p1.rA, c.normal);
+            const Scalar rn1B = cross(p1.rB, c.normal);
+            const Scalar rn2A = cross(p2.rA, c.normal);
+            const Scalar rn2B = cross(p2.rB, c.normal);
+            const Scalar m = a.invMass + b.invMass;
+            const Scalar k11 = m + a.invInertia * rn1A * rn1A + b.invInertia * rn1B * rn1B;
+            const Scalar k22 = m + a.invInertia * rn2A * rn2A + b.invInertia * rn2B * rn2B;
+            const Scalar k12 = m + a.invInertia * rn1A * rn2A + b.invInertia * rn1B * rn2B;
+            c.k << k11, k12, k12, k22;
+            const Scalar det = k11 * k22 - k12 * k12;
+            if (k11 * k11 < kMaxBlockConditionNumber * det) {
+                c.blockSolve = true;
+                c.normalMassBlock = c.k.inverse();
+            }
+        } else {
+            const ContactConstraintPoint& p1 = c.points[0];
+            c.k(0, 0) = p1.normalMass > 0 ? 1 / p1.normalMass : 0;
+        }
+        m_constraints.push_back(c);
+    }
+}
+
+void ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
+{
+    m_impulseTimeline.clear();
+    std::size_t totalPoints = 0;
+    for (const ContactConstraint& c : m_constraints)
+        totalPoints += static_cast<std::size_t>(c.pointCount);
+    const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
+
+    // When point p of constraint c meets this step (as a fraction τ of h), and how fast it
+    // approaches then. τ < 0: it does not meet within the step.
+    struct Approach {
+        Scalar tau = -1;
+        Scalar velocity = 0;
+    };
+    const auto approachOf = [&](const ContactConstraint& c, const ContactConstraintPoint& p) {
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
+        Approach result;
+        if (p.separation <= constants::kTouchDistance) {
+            result.tau = 0;
+        } else {
+            const Scalar t = timeToClose(p.separation, vn, p.normalAcceleration, h);
+            if (t < 0)
+                return result;
+            result.tau = t / h;
+        }
+        result.velocity = vn + p.normalAcceleration * result.tau * h;
+        return result;
+    };
+
+    for (std::size_t impact = 0; impact < maxImpacts; ++impact) {
+        // The fastest approach first: a collision happens before the ones it causes.
+        std::size_t best = m_constraints.size();
+        Scalar bestVelocity = -constants::kRestitutionThreshold;
+        for (std::size_t ci = 0; ci < m_constraints.size(); ++ci) {
+            const ContactConstraint& c = m_constraints[ci];
+            for (int i = 0; i < c.pointCount; ++i) {
+                const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)]);
+                if (ap.tau >= 0 && ap.velocity < bestVelocity) {
+                    bestVelocity = ap.velocity;
+                    best = ci;
+                }
+            }
+        }
+        if (best == m_constraints.size())
+            break;
+
+        ContactConstraint& c = m_constraints[best];
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+
+        // The points that meet this step, with their lever arms at the time of impact: both
+        // bodies have moved on to where they are at τh, and so has the contact point (half-way
+        // between the two surface points, which move with the material). One common point for
+        // both bodies keeps every impulse's angular effect exactly internal, so angular momentum
+        // is conserved to rounding by the impacts.
+        struct ImpactPoint {
+            std::size_t index = 0;
+            Scalar tau = 0;
+            Scalar velocity = 0;
+            Vec2 rA = Vec2::Zero();
+            Vec2 rB = Vec2::Zero();
+        };
+        std::array<ImpactPoint, 2> points{};
+        int count = 0;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const auto ui = static_cast<std::size_t>(i);
+            const ContactConstraintPoint& p = c.points[ui];
+            const Approach ap = approachOf(c, p);
+            if (ap.tau < 0)
+                continue;
+            const Vec2 centreA = positionAt(c.bodyA, a, ap.tau, h);
+            const Vec2 centreB = positionAt(c.bodyB, b, ap.tau, h);
+            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
+            ImpactPoint& ip = points[static_cast<std::size_t>(count++)];
+            ip.index = ui;
+            ip.tau = ap.tau;
+            ip.velocity = ap.velocity;
+            ip.rA = common - centreA;
+            ip.rB = common - centreB;
+        }
+
+        // Effective-mass matrix at those arms, and each point's distance from its target: a point
+        // approaching faster than the threshold must leave at e times its approach speed, any
+        // other may only stop approaching.
+        Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
+        Eigen::Vector2d bias = Eigen::Vector2d::Zero();
+        for (int i = 0; i < count; ++i) {
+            const ImpactPoint& pi = points[static_cast<std::size_t>(i)];
+            for (int j = 0; j < count; ++j) {
+                const ImpactPoint& pj = points[static_cast<std::size_t>(j)];
+                k(i, j) = a.invMass + b.invMass + a.invInertia * cross(pi.rA, c.normal) * cross(pj.rA, c.normal) +
+                          b.invInertia * cross(pi.rB, c.normal) * cross(pj.rB, c.normal);
+            }
+            const Scalar target = pi.velocity < -constants::kRestitutionThreshold ? -c.restitution * pi.velocity : 0;
+            bias(i) = pi.velocity - target;
+        }
+        if (count == 2 && !(k(0, 0) * k(0, 0) < kMaxBlockConditionNumber * k.determinant())) {
+            // Two (nearly) coincident points: resolve the faster one alone.
+            if (bias(1) < bias(0)) {
+                std::swap(points[0], points[1]);
+                bias(0) = bias(1);
+                k(0, 0) = k(1, 1);
+            }
+            count = 1;
+        }
+        const Eigen::Vector2d x = solveTwoPointLcp(k, bias, count);
+
+        const Vec2 t = tangentOf(c.normal);
+        for (int i = 0; i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            ContactConstraintPoint& p = c.points[ip.index];
+            applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, x(i) * c.normal, bodies);
+            if (!p.impacted)
+                p.approachVelocity = ip.velocity;
+            p.impacted = true;
+            p.impactImpulse += x(i);
+        }
+
+        // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
+        for (int i = 0; i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const Scalar vt = relativeVelocity(a, b, ip.rA, ip.rB).dot(t);
+            const Scalar limit = c.friction * x(i);
+            const Scalar jt = std::clamp(-vt * effectiveMass(a, b, ip.rA, ip.rB, t), -limit, limit);
+            applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, jt * t, bodies);
+        }
+        a.hadImpact = true;
+        b.hadImpact = true;
+    }
+}
+
+Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
+{
+    // x(τ) = x₀ + τh·v₀ + Σⱼ max(0, τ − τⱼ)·h·Δvⱼ, written with the current velocity
+    // v = v₀ + Σⱼ Δvⱼ as x₀ + τh·v − h·Σⱼ min(τ, τⱼ)·Δvⱼ.
+    Vec2 x = body.position + (tau * h) * body.velocity;
+    for (const TimedImpulse& entry : m_impulseTimeline) {
+        if (entry.body == index)
+            x -= (h * std::min(tau, entry.tau)) * entry.velocityChange;
+    }
+    return x;
+}
+
+void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& rA, const Vec2& rB, Scalar tau,
+                                       const Vec2& impulse, std::span<SolverBody> bodies)
+{
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    applyImpulse(a, b, rA, rB, impulse);
+    const Vec2 dvA = -a.invMass * impulse;
+    const Vec2 dvB = b.invMass * impulse;
+    a.impactLateVelocity += tau * dvA;
+    a.impactLateAngularVelocity -= tau * a.invInertia * cross(rA, impulse);
+    b.impactLateVelocity += tau * dvB;
+    b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
+    m_impulseTimeline.push_back({c.bodyA, tau, dvA});
+    m_impulseTimeline.push_back({c.bodyB, tau, dvB});
+}
+
+void ContactSolver::warmStart(std::span<SolverBody> bodies)
+{
+    for (const ContactConstraint& c : m_constraints) {
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        const Vec2 t = tangentOf(c.normal);
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+            if (p.normalImpulse == 0 && p.tangentImpulse == 0)
+                continue;
+            applyImpulse(a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
+            a.hadContactForce = true;
+            b.hadContactForce = true;
+        }
+    }
+}
+
+void ContactSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
+{
+    for (ContactConstraint& c : m_constraints) {
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        const Vec2 n = c.normal;
+        const Vec2 t = tangentOf(n);
+        bool acted = false;
+
+        // Friction first, limited by the normal impulse of the last pass: the normal constraint
+        // is the more important one and so gets the last word.
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+            const Scalar vt = relativeVelocity(a, b, p.rA, p.rB).dot(t);
+            const Scalar limit = c.friction * p.normalImpulse;
+            const Scalar updated = std::clamp(p.tangentImpulse - vt * p.tangentMass, -limit, limit);
+            const Scalar delta = updated - p.tangentImpulse;
+            p.tangentImpulse = updated;
+            if (delta != 0) {
+                applyImpulse(a, b, p.rA, p.rB, delta * t);
+                acted = true;
+            }
+        }
+
+        // Normal: vn ≥ −s⁺/h. A speculative point (s > 0) may approach by its gap and no more,
+        // which is what stops a fast body at the surface instead of letting it tunnel; a touching
+        // or overlapping point may not approach at all (overlap is the position solver's job).
+        if (c.pointCount == 2 && c.blockSolve) {
+            ContactConstraintPoint& p1 = c.points[0];
+            ContactConstraintPoint& p2 = c.points[1];
+            const Eigen::Vector2d old(p1.normalImpulse, p2.normalImpulse);
+            Eigen::Vector2d vn(relativeVelocity(a, b, p1.rA, p1.rB).dot(n),
+                               relativeVelocity(a, b, p2.rA, p2.rB).dot(n));
+            vn(0) += std::max(p1.separation, 0.0) / h;
+            vn(1) += std::max(p2.separation, 0.0) / h;
+            // Total impulse x solves the LCP for b = vn − K·old (the velocity without this
+            // constraint's accumulated impulse).
+            const Eigen::Vector2d bias = vn - c.k * old;
+            const Eigen::Vector2d x = solveTwoPointLcp(c.k, bias, 2);
+            const Eigen::Vector2d delta = x - old;
+            p1.normalImpulse = x(0);
+            p2.normalImpulse = x(1);
+            if (delta(0) != 0 || delta(1) != 0) {
+                applyImpulse(a, b, p1.rA, p1.rB, delta(0) * n);
+                applyImpulse(a, b, p2.rA, p2.rB, delta(1) * n);
+                acted = true;
+            }
+        } else {
+            for (int i = 0; i < c.pointCount; ++i) {
+                ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+                const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(n) + std::max(p.separation, 0.0) / h;
+                const Scalar updated = std::max(p.normalImpulse - vn * p.normalMass, 0.0);
+                const Scalar delta = updated - p.normalImpulse;
+                p.normalImpulse = updated;
+                if (delta != 0) {
+                    applyImpulse(a, b, p.rA, p.rB, delta * n);
+                    acted = true;
+                }
+            }
+        }
+        if (acted) {
+            a.hadContactForce = true;
+            b.hadContactForce = true;
+        }
+    }
+}
+
+bool ContactSolver::solvePositions(std::span<SolverBody> bodies)
+{
+    Scalar deepest = 0;
+    for (const ContactConstraint& c : m_constraints) {
+        SolverBody& a = bodies[c.bodyA];
+        SolverBody& b = bodies[c.bodyB];
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+            // Current separation of the two surface points along the normal, which turns with A.
+            const Vec2 n = rotate(c.localNormalA, a.angle);
+            const Vec2 pointA = a.position + rotate(p.localAnchorA, a.angle);
+            const Vec2 pointB = b.position + rotate(p.localAnchorB, b.angle);
+            const Scalar separation = (pointB - pointA).dot(n);
+            deepest = std::min(deepest, separation);
+
+            const Scalar correction = std::clamp(constants::kPositionCorrectionFactor *
+                                                     (separation + constants::kLinearSlop),
+                                                 -constants::kMaxPositionCorrection, 0.0);
+            if (correction == 0)
+                continue;
+            const Vec2 mid = 0.5 * (pointA + pointB);
+            const Vec2 rA = mid - a.position;
+            const Vec2 rB = mid - b.position;
+            const Scalar mass = effectiveMass(a, b, rA, rB, n);
+            const Vec2 impulse = (-correction * mass) * n;
+            a.position -= a.invMass * impulse;
+            a.angle -= a.invInertia * cross(rA, impulse);
+            b.position += b.invMass * impulse;
+            b.angle += b.invInertia * cross(rB, impulse);
+        }
+    }
+    // Allow a little more than the slop before calling it solved, as the iterations converge
+    // towards −slop from either side.
+    return deepest >= -3 * constants::kLinearSlop;
+}
+
+std::vector<model::ContactRecord> ContactSolver::records(const std::vector<bool>& touching) const
+{
+    std::vector<model::ContactRecord> out;
+    out.reserve(m_constraints.size());
+    for (std::size_t ci = 0; ci < m_constraints.size(); ++ci) {
+        const ContactConstraint& c = m_constraints[ci];
+        model::ContactRecord r;
+        r.bodyA = model::BodyId{c.bodyA};
+        r.pieceA = c.pieceA;
+        r.bodyB = model::BodyId{c.bodyB};
+        r.pieceB = c.pieceB;
+        r.pointCount = static_cast<std::uint8_t>(c.pointCount);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+            r.featureIds[i] = c.points[i].id;
+            r.normalImpulses[i] = c.points[i].normalImpulse;
+            r.tangentImpulses[i] = c.points[i].tangentImpulse;
+        }
+        r.touching = touching[ci];
+        out.push_back(r);
+    }
+    return out;
+}
+
+} // namespace impetus::controller

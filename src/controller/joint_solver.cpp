@@ -1,0 +1,173 @@
+#include "controller/joint_solver.h"
+
+#include "model/constants.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace impetus::controller {
+
+namespace {
+
+/// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix).
+Eigen::Matrix2d pointK(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+{
+    const Scalar m = a.invMass + b.invMass;
+    Eigen::Matrix2d k;
+    k(0, 0) = m + a.invInertia * rA.y() * rA.y() + b.invInertia * rB.y() * rB.y();
+    k(0, 1) = -a.invInertia * rA.x() * rA.y() - b.invInertia * rB.x() * rB.y();
+    k(1, 0) = k(0, 1);
+    k(1, 1) = m + a.invInertia * rA.x() * rA.x() + b.invInertia * rB.x() * rB.x();
+    return k;
+}
+
+Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
+{
+    const Scalar det = k.determinant();
+    return det != 0 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
+}
+
+void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    a.velocity -= a.invMass * impulse;
+    a.angularVelocity -= a.invInertia * cross(rA, impulse);
+    b.velocity += b.invMass * impulse;
+    b.angularVelocity += b.invInertia * cross(rB, impulse);
+    a.hadContactForce = true;
+    b.hadContactForce = true;
+}
+
+void applyPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    a.position -= a.invMass * impulse;
+    a.angle -= a.invInertia * cross(rA, impulse);
+    b.position += b.invMass * impulse;
+    b.angle += b.invInertia * cross(rB, impulse);
+}
+
+Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+{
+    return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
+}
+
+} // namespace
+
+SolverBody& JointSolver::bodyOf(std::span<SolverBody> bodies, std::uint32_t index)
+{
+    return index == kWorld ? m_world : bodies[index];
+}
+
+void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies)
+{
+    m_joints.clear();
+    m_world = SolverBody{};
+    for (const model::Joint& joint : world.joints) {
+        Constraint c;
+        c.type = joint.type;
+        c.bodyA = joint.bodyA.index;
+        c.bodyB = joint.bodyB ? joint.bodyB->index : kWorld;
+        c.localA = joint.anchorA;
+        c.localB = joint.anchorB;
+        c.length = joint.length;
+        c.impulse = joint.impulse;
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
+        c.rA = rotate(c.localA, a.angle);
+        c.rB = rotate(c.localB, b.angle);
+        c.offset = b.position + c.rB - a.position - c.rA;
+        if (c.type == model::JointType::Pin) {
+            c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB));
+        } else {
+            const Vec2 d = b.position + c.rB - a.position - c.rA;
+            const Scalar distance = d.norm();
+            // A rod squeezed to a point has no direction this instant; push along x until it
+            // opens up again.
+            c.axis = distance > 0 ? Vec2(d / distance) : Vec2(1, 0);
+            const Scalar rnA = cross(c.rA, c.axis);
+            const Scalar rnB = cross(c.rB, c.axis);
+            const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+            c.rodMass = k > 0 ? 1 / k : 0;
+        }
+        m_joints.push_back(c);
+    }
+}
+
+void JointSolver::warmStart(std::span<SolverBody> bodies)
+{
+    for (const Constraint& c : m_joints) {
+        SolverBody& a = bodyOf(bodies, c.bodyA);
+        SolverBody& b = bodyOf(bodies, c.bodyB);
+        const Vec2 impulse = c.type == model::JointType::Pin ? c.impulse : Vec2(c.impulse.x() * c.axis);
+        applyImpulse(a, b, c.rA, c.rB, impulse);
+    }
+}
+
+void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
+{
+    // Each joint asks for the velocity that puts its anchors where the joint wants them at the
+    // END of the step (x = x₀ + h·v), not merely for a velocity along the joint's current
+    // tangent. The impulse acts along the constraint's direction at the start of the step, and
+    // the iterations solve the non-linear end condition. This is the SHAKE scheme: symplectic, so
+    // a pendulum's energy stays bounded over any number of swings, where projecting velocities
+    // on the start tangent alone loses about 1 % of the swing per second at 240 Hz.
+    for (Constraint& c : m_joints) {
+        SolverBody& a = bodyOf(bodies, c.bodyA);
+        SolverBody& b = bodyOf(bodies, c.bodyB);
+        const Vec2 dv = relativeVelocity(a, b, c.rA, c.rB);
+        const Vec2 predicted = c.offset + h * dv;
+        if (c.type == model::JointType::Pin) {
+            const Vec2 impulse = -(c.pinMass * Vec2(predicted / h));
+            c.impulse += impulse;
+            applyImpulse(a, b, c.rA, c.rB, impulse);
+        } else {
+            const Scalar lambda = -c.rodMass * (predicted.norm() - c.length) / h;
+            c.impulse.x() += lambda;
+            applyImpulse(a, b, c.rA, c.rB, lambda * c.axis);
+        }
+    }
+}
+
+bool JointSolver::solvePositions(std::span<SolverBody> bodies)
+{
+    Scalar worst = 0;
+    for (const Constraint& c : m_joints) {
+        SolverBody& a = bodyOf(bodies, c.bodyA);
+        SolverBody& b = bodyOf(bodies, c.bodyB);
+        const Vec2 rA = rotate(c.localA, a.angle);
+        const Vec2 rB = rotate(c.localB, b.angle);
+        const Vec2 d = b.position + rB - a.position - rA;
+        if (c.type == model::JointType::Pin) {
+            worst = std::max(worst, d.norm());
+            Vec2 error = d;
+            const Scalar size = error.norm();
+            if (size > constants::kMaxPositionCorrection)
+                error *= constants::kMaxPositionCorrection / size;
+            const Vec2 impulse = -(safeInverse(pointK(a, b, rA, rB)) * error);
+            applyPositionImpulse(a, b, rA, rB, impulse);
+        } else {
+            const Scalar distance = d.norm();
+            if (!(distance > 0))
+                continue;
+            const Vec2 u = d / distance;
+            const Scalar error = std::clamp(distance - c.length, -constants::kMaxPositionCorrection,
+                                            constants::kMaxPositionCorrection);
+            worst = std::max(worst, std::abs(distance - c.length));
+            const Scalar rnA = cross(rA, u);
+            const Scalar rnB = cross(rB, u);
+            const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+            if (k > 0)
+                applyPositionImpulse(a, b, rA, rB, Vec2((-error / k) * u));
+        }
+    }
+    return worst <= constants::kLinearSlop;
+}
+
+void JointSolver::storeImpulses(model::World& world) const
+{
+    for (std::size_t i = 0; i < m_joints.size(); ++i)
+        world.joints[i].impulse = m_joints[i].impulse;
+}
+
+} // namespace impetus::controller

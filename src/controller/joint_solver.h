@@ -1,0 +1,67 @@
+#pragma once
+/// \file joint_solver.h
+/// Pin and rod joints as velocity constraints (sequential impulses with warm starting), with
+/// position correction by non-linear Gauss–Seidel.
+/// Each velocity constraint aims at the anchors' positions at the end of the step (SHAKE), see
+/// solveVelocities.
+///  - Pin: the two anchor points coincide, C = p_B − p_A = 0 (two equations).
+///  - Rod: the anchors keep their distance, C = |p_B − p_A| − L = 0 (one equation, pushes or pulls).
+/// A joint to the world (bodyB absent) uses a fixed point for B.
+
+#include "controller/contact_solver.h"
+#include "model/world.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace impetus::controller {
+
+class JointSolver {
+public:
+    /// Builds the constraints from the world's joints at the bodies' current poses, warm-starting
+    /// from each joint's stored impulse.
+    void prepare(const model::World& world, std::span<const SolverBody> bodies);
+
+    /// Applies the stored impulses.
+    void warmStart(std::span<SolverBody> bodies);
+
+    /// One pass over every joint's velocity constraint, for a step of h seconds.
+    void solveVelocities(std::span<SolverBody> bodies, Scalar h);
+
+    /// One position pass. Returns true when every joint is within kLinearSlop of exact.
+    bool solvePositions(std::span<SolverBody> bodies);
+
+    /// Copies the accumulated impulses back into the world's joints (for warm starting).
+    void storeImpulses(model::World& world) const;
+
+    bool empty() const { return m_joints.empty(); }
+
+private:
+    static constexpr std::uint32_t kWorld = UINT32_MAX; ///< "body" index of the fixed world
+
+    struct Constraint {
+        model::JointType type = model::JointType::Pin;
+        std::uint32_t bodyA = 0;
+        std::uint32_t bodyB = kWorld;
+        Vec2 localA = Vec2::Zero(); ///< anchor in A's frame
+        Vec2 localB = Vec2::Zero(); ///< anchor in B's frame, or the world point
+        Vec2 rA = Vec2::Zero();
+        Vec2 rB = Vec2::Zero();
+        Vec2 offset = Vec2::Zero(); ///< p_B − p_A at the start of the step, m
+        Scalar length = 0; ///< rod length, m
+        Vec2 axis = Vec2::Zero(); ///< rod: unit vector from A's anchor to B's
+        Eigen::Matrix2d pinMass = Eigen::Matrix2d::Zero(); ///< pin: K⁻¹
+        Scalar rodMass = 0; ///< rod: 1/K
+        Vec2 impulse = Vec2::Zero(); ///< accumulated (rod: x only)
+    };
+
+    SolverBody& bodyOf(std::span<SolverBody> bodies, std::uint32_t index);
+
+    std::vector<Constraint> m_joints;
+    SolverBody m_world; ///< the fixed world: zero inverse mass, at the origin, never moves
+};
+
+} // namespace impetus::controller

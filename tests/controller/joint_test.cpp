@@ -1,0 +1,147 @@
+// Pin and rod joints against pendulum theory.
+
+#include "controller/simulation.h"
+#include "support/world_builders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace impetus::controller {
+namespace {
+
+using model::IntegratorKind;
+using testing::makeBall;
+using testing::makeBox;
+using testing::makeEmptyWorld;
+
+constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
+constexpr Scalar kG = 9.81;
+
+/// Complete elliptic integral of the first kind K(k) by the arithmetic–geometric mean:
+/// K(k) = π / (2·AGM(1, √(1 − k²))).
+Scalar ellipticK(Scalar k)
+{
+    Scalar a = 1;
+    Scalar b = std::sqrt(1 - k * k);
+    for (int i = 0; i < 30; ++i) {
+        const Scalar next = (a + b) / 2;
+        b = std::sqrt(a * b);
+        a = next;
+    }
+    return kPi / (2 * a);
+}
+
+/// Mean period of the x coordinate of body `index` from its upward zero crossings (linearly
+/// interpolated between steps), over `duration` seconds.
+Scalar measurePeriod(model::World& world, std::size_t index, Scalar duration, Scalar pivotX,
+                     std::vector<Scalar>* distances = nullptr, Vec2 pivot = Vec2::Zero())
+{
+    Simulation simulation;
+    std::vector<Scalar> crossings;
+    Scalar previousX = world.bodies[index].state.position.x() - pivotX;
+    const Scalar h = world.settings.timeStep;
+    const int steps = static_cast<int>(std::lround(duration / h));
+    for (int i = 1; i <= steps; ++i) {
+        simulation.step(world);
+        const Scalar x = world.bodies[index].state.position.x() - pivotX;
+        if (previousX < 0 && x >= 0)
+            crossings.push_back((i - 1 + previousX / (previousX - x)) * h);
+        previousX = x;
+        if (distances)
+            distances->push_back((world.bodies[index].state.position - pivot).norm());
+    }
+    if (crossings.size() < 2)
+        return 0;
+    return (crossings.back() - crossings.front()) / static_cast<Scalar>(crossings.size() - 1);
+}
+
+// A ball on a massless rod, released at 60°: the period is 4√(L/g)·K(sin(θ₀/2)), 7% longer than
+// the small-angle 2π√(L/g), and the rod keeps its length.
+TEST(Pendulum, RodPendulumHasTheLargeAmplitudePeriod)
+{
+    const Scalar length = 1.0;
+    const Scalar theta0 = kPi / 3;
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
+    world.bodies.push_back(makeBall("bob", 1.0, 0.05, Vec2(length * std::sin(theta0), -length * std::cos(theta0))));
+    model::Joint rod;
+    rod.type = model::JointType::Rod;
+    rod.bodyA = model::BodyId{0};
+    rod.anchorA = Vec2::Zero();
+    rod.bodyB = std::nullopt;
+    rod.anchorB = Vec2::Zero();
+    rod.length = length;
+    world.joints.push_back(rod);
+
+    std::vector<Scalar> distances;
+    const Scalar period = measurePeriod(world, 0, 12.0, 0.0, &distances);
+    const Scalar expected = 4 * std::sqrt(length / kG) * ellipticK(std::sin(theta0 / 2));
+    EXPECT_NEAR(period, expected, 1e-3 * expected);
+    for (const Scalar d : distances)
+        ASSERT_NEAR(d, length, 1e-3);
+}
+
+// A rod hung by a pin at its top end is a physical pendulum: T = 2π√(I_pivot / (m·g·d)), with the
+// amplitude correction (1 + θ₀²/16) at 10°.
+TEST(Pendulum, PinnedRodIsAPhysicalPendulum)
+{
+    const Scalar w = 0.05;
+    const Scalar hgt = 1.0;
+    const Scalar m = 2.0;
+    const Scalar theta0 = 10 * kPi / 180;
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
+    // The bar hangs from the origin, turned by θ₀ counter-clockwise about its top end.
+    const Vec2 centre = rotate(Vec2(0, -hgt / 2), theta0);
+    world.bodies.push_back(makeBox("bar", m, w, hgt, centre, theta0));
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = model::BodyId{0};
+    pin.worldAnchor = Vec2::Zero();
+    pin.anchorA = Vec2(0, hgt / 2);
+    pin.anchorB = Vec2::Zero();
+    world.joints.push_back(pin);
+
+    const Scalar d = hgt / 2;
+    const Scalar iPivot = m * (w * w + hgt * hgt) / 12 + m * d * d;
+    const Scalar expected = 2 * kPi * std::sqrt(iPivot / (m * kG * d)) * (1 + theta0 * theta0 / 16);
+    const Scalar period = measurePeriod(world, 0, 10.0, 0.0);
+    EXPECT_NEAR(period, expected, 1e-3 * expected);
+    // The hinge stays put.
+    EXPECT_NEAR(world.bodies[0].worldPoint(Vec2(0, hgt / 2)).norm(), 0.0, 1e-3);
+    EXPECT_NEAR(world.joints[0].worldAnchor.norm(), 0.0, 1e-3);
+}
+
+// A pin between two free bodies holds them together while the pair spins in zero gravity, and
+// the joint's internal forces keep the total momentum.
+TEST(PinJoint, HoldsTwoBodiesTogether)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0);
+    world.bodies.push_back(makeBox("a", 1.0, 1.0, 0.2, Vec2(-0.5, 0), 0.0));
+    world.bodies.push_back(makeBox("b", 2.0, 1.0, 0.2, Vec2(0.5, 0), 0.0));
+    world.bodies[0].state.velocity = Vec2(0, 1);
+    world.bodies[1].state.velocity = Vec2(0, -0.5);
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = model::BodyId{0};
+    pin.bodyB = model::BodyId{1};
+    pin.worldAnchor = Vec2::Zero();
+    pin.anchorA = Vec2(0.5, 0);
+    pin.anchorB = Vec2(-0.5, 0);
+    world.joints.push_back(pin);
+    const Vec2 p0 = world.bodies[0].state.velocity * 1.0 + world.bodies[1].state.velocity * 2.0;
+    Simulation simulation;
+    for (int i = 0; i < 480; ++i) {
+        simulation.step(world);
+        const Vec2 hingeA = world.bodies[0].worldPoint(Vec2(0.5, 0));
+        const Vec2 hingeB = world.bodies[1].worldPoint(Vec2(-0.5, 0));
+        ASSERT_LT((hingeA - hingeB).norm(), 1e-3) << "step " << i;
+    }
+    const Vec2 p = world.bodies[0].state.velocity * 1.0 + world.bodies[1].state.velocity * 2.0;
+    EXPECT_NEAR((p - p0).norm(), 0.0, 1e-9);
+    EXPECT_GT(std::abs(world.bodies[0].state.angularVelocity), 0.1); // the pair spins
+}
+
+} // namespace
+} // namespace impetus::controller

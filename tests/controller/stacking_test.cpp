@@ -1,0 +1,80 @@
+// Stacking: boxes rest at their true height and stacks stand.
+
+#include "controller/simulation.h"
+#include "model/example_scenes.h"
+#include "support/world_builders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace impetus::controller {
+namespace {
+
+using model::IntegratorKind;
+using testing::makeBox;
+using testing::makeEmptyWorld;
+using testing::makeGround;
+using testing::withMaterial;
+
+model::World makeStack(int count)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -9.81));
+    world.bodies.push_back(withMaterial(makeGround("ground", 20, 1), 0.0, 0.6));
+    for (int i = 0; i < count; ++i)
+        world.bodies.push_back(withMaterial(makeBox("box" + std::to_string(i), 1.0, 1.0, 1.0, Vec2(0, 0.5 + i)), 0.0, 0.6));
+    return world;
+}
+
+// One box on the ground sits at its true height: penetration at most the slop (0.5 mm), no gap.
+TEST(Stacking, RestingBoxSitsAtItsTrueHeight)
+{
+    model::World world = makeStack(1);
+    Simulation simulation;
+    for (int i = 0; i < 240 * 2; ++i)
+        simulation.step(world);
+    const model::BodyState& s = world.bodies[1].state;
+    EXPECT_NEAR(s.position.y(), 0.5, constants::kLinearSlop);
+    EXPECT_LE(s.position.y(), 0.5 + 1e-9); // never floats above the floor
+    EXPECT_NEAR(s.velocity.norm(), 0.0, 1e-9);
+    EXPECT_TRUE(world.bodies[1].colliding);
+    EXPECT_EQ(world.collisionCount, 1);
+}
+
+// Ten boxes stand for 10 s: none drifts sideways by more than a millimetre or sinks by more than
+// the slop per contact.
+TEST(Stacking, TenBoxStackStandsForTenSeconds)
+{
+    model::World world = makeStack(10);
+    Simulation simulation;
+    for (int i = 0; i < 240 * 10; ++i)
+        simulation.step(world);
+    for (int i = 0; i < 10; ++i) {
+        const model::BodyState& s = world.bodies[static_cast<std::size_t>(i + 1)].state;
+        EXPECT_NEAR(s.position.x(), 0.0, 1e-3) << "box " << i;
+        EXPECT_NEAR(s.position.y(), 0.5 + i, (i + 1) * constants::kLinearSlop) << "box " << i;
+        EXPECT_NEAR(s.angle, 0.0, 1e-3) << "box " << i;
+    }
+}
+
+// A pyramid of base 20 (210 boxes) stands for 5 s: the top box stays within a centimetre of
+// where it started, and every box within a few slops of its resting height.
+TEST(Stacking, PyramidOfBase20Stands)
+{
+    model::World world = model::makePyramid(20);
+    const model::World start = world;
+    Simulation simulation;
+    for (int i = 0; i < 240 * 5; ++i)
+        simulation.step(world);
+    const Vec2 drift = world.bodies.back().state.position - start.bodies.back().state.position;
+    EXPECT_LT(std::abs(drift.x()), 0.01);
+    EXPECT_LT(std::abs(drift.y()), 20 * constants::kLinearSlop);
+    for (std::size_t i = 1; i < world.bodies.size(); ++i) {
+        ASSERT_NEAR(world.bodies[i].state.angle, 0.0, 0.01) << "box " << i;
+        ASSERT_LT(world.bodies[i].state.velocity.norm(), 0.01) << "box " << i;
+    }
+}
+
+} // namespace
+} // namespace impetus::controller
