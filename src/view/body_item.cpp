@@ -48,15 +48,31 @@ BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* par
     else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
         m_radiusLine = QLineF(0, 0, ellipse->radiusX, 0);
 
-    const QColor color = toQColor(body.color);
-    m_fill = QBrush(body.fixed ? color.darker(constants::kFixedFillDarkerFactor) : color);
-    if (body.fixed)
-        m_hatch = QBrush(color.darker(constants::kFixedHatchDarkerFactor), Qt::BDiagPattern);
-    m_pen = QPen(color.darker(constants::kOutlineDarkerFactor), constants::kOutlineWidthPx);
-    m_pen.setCosmetic(true);
-    m_pen.setJoinStyle(Qt::RoundJoin);
-
+    m_own = lookFor(toQColor(body.color), body.fixed);
+    m_red = lookFor(QColor(constants::kCollidingRed, constants::kCollidingGreen, constants::kCollidingBlue),
+                    body.fixed);
     setPose(body.state);
+    setColliding(body.colliding);
+}
+
+BodyItem::Look BodyItem::lookFor(const QColor& color, bool fixed)
+{
+    Look look;
+    look.fill = QBrush(fixed ? color.darker(constants::kFixedFillDarkerFactor) : color);
+    if (fixed)
+        look.hatch = QBrush(color.darker(constants::kFixedHatchDarkerFactor), Qt::BDiagPattern);
+    look.pen = QPen(color.darker(constants::kOutlineDarkerFactor), constants::kOutlineWidthPx);
+    look.pen.setCosmetic(true);
+    look.pen.setJoinStyle(Qt::RoundJoin);
+    return look;
+}
+
+void BodyItem::setColliding(bool colliding)
+{
+    if (colliding == m_colliding)
+        return;
+    m_colliding = colliding;
+    update();
 }
 
 void BodyItem::setPose(const model::BodyState& state)
@@ -77,14 +93,15 @@ QRectF BodyItem::boundingRect() const { return m_outline.boundingRect(); }
 void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
     // Fill, then the hatch of a fixed body, then the outline on top of both.
+    const Look& look = m_colliding ? m_red : m_own;
     painter->setPen(Qt::NoPen);
-    painter->setBrush(m_fill);
+    painter->setBrush(look.fill);
     painter->drawPath(m_outline);
-    if (m_hatch.style() != Qt::NoBrush) {
-        painter->setBrush(m_hatch);
+    if (look.hatch.style() != Qt::NoBrush) {
+        painter->setBrush(look.hatch);
         painter->drawPath(m_outline);
     }
-    painter->setPen(m_pen);
+    painter->setPen(look.pen);
     painter->setBrush(Qt::NoBrush);
     painter->drawPath(m_outline);
     if (!m_radiusLine.isNull())

@@ -34,6 +34,12 @@ public:
     /// (counter-clockwise) followed by the translation to state.position.
     void setPose(const model::BodyState& state);
 
+    /// Draws the body red (fill and outline) while it collides, in its own colour otherwise.
+    void setColliding(bool colliding);
+
+    /// Whether the item is drawn as colliding.
+    bool isColliding() const { return m_colliding; }
+
     /// The outline of the body in its own frame, m.
     QPainterPath shape() const override;
 
@@ -48,9 +54,17 @@ private:
     model::BodyId m_id;
     QPainterPath m_outline;
     QLineF m_radiusLine; ///< drawn for round shapes; null for polygons
-    QBrush m_fill;
-    QBrush m_hatch; ///< Qt::NoBrush unless the body is fixed
-    QPen m_pen;
+    /// The brushes and pen of one colour scheme.
+    struct Look {
+        QBrush fill;
+        QBrush hatch; ///< Qt::NoBrush unless the body is fixed
+        QPen pen;
+    };
+    static Look lookFor(const QColor& color, bool fixed);
+
+    Look m_own; ///< in the body's colour
+    Look m_red; ///< while colliding
+    bool m_colliding = false;
 };
 
 } // namespace impetus::view

@@ -116,8 +116,10 @@ void CanvasView::syncItems()
 {
     const model::World& world = m_runner.world();
     const std::size_t bodies = std::min(world.bodies.size(), m_bodyItems.size());
-    for (std::size_t i = 0; i < bodies; ++i)
+    for (std::size_t i = 0; i < bodies; ++i) {
         m_bodyItems[i]->setPose(world.bodies[i].state);
+        m_bodyItems[i]->setColliding(world.bodies[i].colliding);
+    }
     const std::size_t springs = std::min(world.springs.size(), m_springItems.size());
     for (std::size_t i = 0; i < springs; ++i) {
         const auto [a, b] = springEnds(world, world.springs[i]);

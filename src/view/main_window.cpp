@@ -112,10 +112,13 @@ void MainWindow::createStatusBar()
     m_timeLabel->setAccessibleName(tr("Simulated time"));
     m_energyLabel = new QLabel(this);
     m_energyLabel->setAccessibleName(tr("Total energy"));
-    for (QLabel* label : {m_timeLabel, m_energyLabel})
+    m_collisionLabel = new QLabel(this);
+    m_collisionLabel->setAccessibleName(tr("Collision count"));
+    for (QLabel* label : {m_timeLabel, m_energyLabel, m_collisionLabel})
         label->setContentsMargins(kStatusLabelPaddingPx, 0, kStatusLabelPaddingPx, 0);
     statusBar()->addPermanentWidget(m_timeLabel);
     statusBar()->addPermanentWidget(m_energyLabel);
+    statusBar()->addPermanentWidget(m_collisionLabel);
     statusBar()->setAccessibleName(tr("Status"));
 }
 
@@ -181,6 +184,7 @@ void MainWindow::updateStatus()
     m_timeLabel->setText(tr("t = %1 s").arg(world.time, 0, 'f', 3));
     const double energy = controller::computeEnergy(world).total();
     m_energyLabel->setText(tr("E = %1 J").arg(energy, 0, 'f', 3));
+    m_collisionLabel->setText(tr("Collisions: %1").arg(world.collisionCount));
 }
 
 void MainWindow::updateTitle()

@@ -75,6 +75,7 @@ private:
     QAction* m_stepAction = nullptr;
     QLabel* m_timeLabel = nullptr;
     QLabel* m_energyLabel = nullptr;
+    QLabel* m_collisionLabel = nullptr;
 };
 
 } // namespace impetus::view

@@ -53,6 +53,12 @@ inline constexpr int kOutlineDarkerFactor = 160;
 inline constexpr int kFixedFillDarkerFactor = 125;
 inline constexpr int kFixedHatchDarkerFactor = 200;
 
+/// Colour of a colliding body, fill and outline base (contract: colliding bodies are red whatever
+/// their own colour). #dc2626: a clear red that stays red on a washed-out projector.
+inline constexpr int kCollidingRed = 0xdc;
+inline constexpr int kCollidingGreen = 0x26;
+inline constexpr int kCollidingBlue = 0x26;
+
 /// Number of zig-zag corners drawn on a spring. Fixed, so a stretched spring shows longer teeth.
 inline constexpr int kSpringZigZagCorners = 12;
 

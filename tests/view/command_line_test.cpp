@@ -90,6 +90,7 @@ private slots:
     void drawsWithYUp();
     void keepsLoadTimeFraming();
     void usesDefaultSceneWithoutArgument();
+    void drawsCollidingBodiesRed();
     void badSceneExitsWithTwo();
     void badArgumentsExitWithTwo_data();
     void badArgumentsExitWithTwo();
@@ -139,10 +140,10 @@ void CommandLineTest::drawsWithYUp()
 
 void CommandLineTest::keepsLoadTimeFraming()
 {
-    // Under gravity the ball falls away from the ground. As in the window, the picture stays
-    // framed on the scene as loaded: the ground does not move, the ball leaves.
+    // Under upward gravity the ball rises away from the ground. As in the window, the picture
+    // stays framed on the scene as loaded: the ground does not move, the ball leaves.
     QByteArray falling(kBallAboveGround);
-    falling.replace(R"("gravity": [0, 0])", R"("gravity": [0, -9.81])");
+    falling.replace(R"("gravity": [0, 0])", R"("gravity": [0, 9.81])");
     QVERIFY(writeFile(scenePath(), falling));
     const QColor groundColor(0x00, 0x00, 0xcc);
     const QString later = m_dir->filePath(QStringLiteral("later.png"));
@@ -164,6 +165,37 @@ void CommandLineTest::keepsLoadTimeFraming()
     QVERIFY(groundBefore && groundAfter);
     QVERIFY(qAbs(*groundBefore - *groundAfter) < 0.5);
     QVERIFY(meanRowOf(before, QColor(0xff, 0, 0)).has_value());
+}
+
+void CommandLineTest::drawsCollidingBodiesRed()
+{
+    // The ball falls 1.2 m onto the ground and rests there: in the picture after 2 s both bodies
+    // are red (contract: fill and outline, whatever their own colour), and neither shows its own
+    // colour. Before the fall, both show their own colours and nothing is red.
+    QByteArray falling(kBallAboveGround);
+    falling.replace(R"("gravity": [0, 0])", R"("gravity": [0, -9.81])");
+    QVERIFY(writeFile(scenePath(), falling));
+    const QColor red(0xdc, 0x26, 0x26);
+    const QColor ownBall(0xff, 0, 0);
+    const QColor ownGround(0x00, 0x00, 0xcc);
+
+    const Run before = runImpetus({QStringLiteral("--screenshot"), outputPath(), QStringLiteral("--size"),
+                                   QStringLiteral("400x300"), scenePath()});
+    QVERIFY2(before.exitCode == 0, qPrintable(before.stdErr));
+    QImage image;
+    QVERIFY(image.load(outputPath(), "PNG"));
+    QVERIFY(meanRowOf(image, ownBall).has_value());
+    QVERIFY(meanRowOf(image, ownGround).has_value());
+    QVERIFY(!meanRowOf(image, red).has_value());
+
+    const Run after = runImpetus({QStringLiteral("--screenshot"), outputPath(), QStringLiteral("--size"),
+                                  QStringLiteral("400x300"), QStringLiteral("--run-for"), QStringLiteral("2"),
+                                  scenePath()});
+    QVERIFY2(after.exitCode == 0, qPrintable(after.stdErr));
+    QVERIFY(image.load(outputPath(), "PNG"));
+    QVERIFY(meanRowOf(image, red).has_value());
+    QVERIFY(!meanRowOf(image, ownBall).has_value());
+    QVERIFY(!meanRowOf(image, ownGround).has_value());
 }
 
 void CommandLineTest::usesDefaultSceneWithoutArgument()
