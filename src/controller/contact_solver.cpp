@@ -174,6 +174,15 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
             }
         }
 
+        // A manifold that carried load in the last step is resting as a whole: its points share
+        // the load unevenly from step to step, and an unloaded corner of a resting box is not
+        // struck when the box settles onto it.
+        bool loaded = false;
+        for (int i = 0; i < c.pointCount; ++i)
+            loaded = loaded || c.points[static_cast<std::size_t>(i)].normalImpulse > 0;
+        for (int i = 0; i < c.pointCount; ++i)
+            c.points[static_cast<std::size_t>(i)].carriesLoad = loaded;
+
         if (c.pointCount == 2) {
             const ContactConstraintPoint& p1 = c.points[0];
             const ContactConstraintPoint& p2 = c.points[1];
@@ -199,25 +208,30 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     }
 }
 
-void ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
+int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
+    m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
     std::size_t totalPoints = 0;
     for (const ContactConstraint& c : m_constraints)
         totalPoints += static_cast<std::size_t>(c.pointCount);
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
     // When point p of constraint c meets this step (as a fraction τ of h), and how fast it
-    // approaches then. τ < 0: it does not meet within the step.
+    // approaches then. τ < 0: it does not meet within the step, or it is a resting contact: one
+    // that carried load in the last step is held by contact forces, not struck (otherwise the
+    // small residual sinking of a tall stack would set off a cascade of plastic "impacts").
     struct Approach {
         Scalar tau = -1;
         Scalar velocity = 0;
     };
     const auto approachOf = [&](const ContactConstraint& c, const ContactConstraintPoint& p) {
+        Approach result;
+        if (p.carriesLoad)
+            return result;
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
         const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
-        Approach result;
         if (p.separation <= constants::kTouchDistance) {
             result.tau = 0;
         } else {
@@ -230,22 +244,62 @@ void ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         return result;
     };
 
-    for (std::size_t impact = 0; impact < maxImpacts; ++impact) {
-        // The fastest approach first: a collision happens before the ones it causes.
-        std::size_t best = m_constraints.size();
-        Scalar bestVelocity = -constants::kRestitutionThreshold;
-        for (std::size_t ci = 0; ci < m_constraints.size(); ++ci) {
-            const ContactConstraint& c = m_constraints[ci];
-            for (int i = 0; i < c.pointCount; ++i) {
-                const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)]);
-                if (ap.tau >= 0 && ap.velocity < bestVelocity) {
-                    bestVelocity = ap.velocity;
-                    best = ci;
-                }
+    // The fastest approach first: a collision happens before the ones it causes. A heap holds the
+    // approaching constraints by their fastest point; an impact changes only its two bodies, so
+    // only their constraints are looked at again (entries made stale by that carry an old
+    // version and are skipped).
+    const auto later = [](const Candidate& x, const Candidate& y) {
+        return x.velocity != y.velocity ? x.velocity > y.velocity : x.constraint > y.constraint;
+    };
+    std::vector<Candidate>& heap = m_candidates;
+    heap.clear();
+    m_versions.assign(m_constraints.size(), 0);
+    const auto consider = [&](std::uint32_t ci) {
+        const ContactConstraint& c = m_constraints[ci];
+        Scalar fastest = -constants::kRestitutionThreshold;
+        bool approaching = false;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)]);
+            if (ap.tau >= 0 && ap.velocity < fastest) {
+                fastest = ap.velocity;
+                approaching = true;
             }
         }
-        if (best == m_constraints.size())
-            break;
+        if (approaching) {
+            heap.push_back({fastest, ci, m_versions[ci]});
+            std::push_heap(heap.begin(), heap.end(), later);
+        }
+    };
+    for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
+        consider(ci);
+
+    // Which constraints each body takes part in, to find those an impact affects.
+    m_bodyConstraintStart.assign(bodies.size() + 1, 0);
+    for (const ContactConstraint& c : m_constraints) {
+        ++m_bodyConstraintStart[c.bodyA + 1];
+        ++m_bodyConstraintStart[c.bodyB + 1];
+    }
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        m_bodyConstraintStart[i + 1] += m_bodyConstraintStart[i];
+    m_bodyConstraints.resize(m_bodyConstraintStart.back());
+    {
+        std::vector<std::uint32_t>& fill = m_bodyConstraintFill;
+        fill.assign(m_bodyConstraintStart.begin(), m_bodyConstraintStart.end() - 1);
+        for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
+            m_bodyConstraints[fill[m_constraints[ci].bodyA]++] = ci;
+            m_bodyConstraints[fill[m_constraints[ci].bodyB]++] = ci;
+        }
+    }
+
+    int resolved = 0;
+    while (!heap.empty() && static_cast<std::size_t>(resolved) < maxImpacts) {
+        std::pop_heap(heap.begin(), heap.end(), later);
+        const Candidate top = heap.back();
+        heap.pop_back();
+        if (top.version != m_versions[top.constraint])
+            continue;
+        const std::size_t best = top.constraint;
+        ++resolved;
 
         ContactConstraint& c = m_constraints[best];
         SolverBody& a = bodies[c.bodyA];
@@ -329,18 +383,29 @@ void ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         }
         a.hadImpact = true;
         b.hadImpact = true;
+
+        // Everything touching a body that just changed velocity may now approach (or stop).
+        // Fixed bodies never change, so their many contacts need no second look.
+        for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
+            if (bodies[body].invMass == 0 && bodies[body].invInertia == 0)
+                continue;
+            for (std::uint32_t at = m_bodyConstraintStart[body]; at < m_bodyConstraintStart[body + 1]; ++at) {
+                const std::uint32_t cj = m_bodyConstraints[at];
+                ++m_versions[cj];
+                consider(cj);
+            }
+        }
     }
+    return resolved;
 }
 
 Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
 {
     // x(τ) = x₀ + τh·v₀ + Σⱼ max(0, τ − τⱼ)·h·Δvⱼ, written with the current velocity
-    // v = v₀ + Σⱼ Δvⱼ as x₀ + τh·v − h·Σⱼ min(τ, τⱼ)·Δvⱼ.
+    // v = v₀ + Σⱼ Δvⱼ as x₀ + τh·v − h·Σⱼ min(τ, τⱼ)·Δvⱼ, over this body's impulses only.
     Vec2 x = body.position + (tau * h) * body.velocity;
-    for (const TimedImpulse& entry : m_impulseTimeline) {
-        if (entry.body == index)
-            x -= (h * std::min(tau, entry.tau)) * entry.velocityChange;
-    }
+    for (std::uint32_t k = m_lastTimedImpulse[index]; k != kNoImpulse; k = m_impulseTimeline[k].previous)
+        x -= (h * std::min(tau, m_impulseTimeline[k].tau)) * m_impulseTimeline[k].velocityChange;
     return x;
 }
 
@@ -356,8 +421,10 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     a.impactLateAngularVelocity -= tau * a.invInertia * cross(rA, impulse);
     b.impactLateVelocity += tau * dvB;
     b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
-    m_impulseTimeline.push_back({c.bodyA, tau, dvA});
-    m_impulseTimeline.push_back({c.bodyB, tau, dvB});
+    for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
+        m_impulseTimeline.push_back({m_lastTimedImpulse[body], tau, dv});
+        m_lastTimedImpulse[body] = static_cast<std::uint32_t>(m_impulseTimeline.size() - 1);
+    }
 }
 
 void ContactSolver::warmStart(std::span<SolverBody> bodies)

@@ -61,6 +61,7 @@ struct ContactConstraintPoint {
     Scalar startNormalVelocity = 0; ///< relative normal velocity at the start of the step, m/s
     Scalar approachVelocity = 0; ///< impacts: relative normal velocity just before, m/s (< 0: approaching)
     bool impacted = false; ///< an impact was resolved at this point this step
+    bool carriesLoad = false; ///< it had a contact-force impulse in the last step: resting, not struck
     FeatureId id = 0;
 };
 
@@ -106,8 +107,9 @@ public:
                  std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives);
 
     /// Resolves the impacts of this step, in order of approach speed, on `bodies` (which hold the
-    /// velocities from before this step's forces). Records each body's impact data.
-    void solveImpacts(std::span<SolverBody> bodies, Scalar h);
+    /// velocities from before this step's forces). Records each body's impact data. Returns the
+    /// number of impacts resolved.
+    int solveImpacts(std::span<SolverBody> bodies, Scalar h);
 
     /// Applies last step's contact-force impulses (warm starting).
     void warmStart(std::span<SolverBody> bodies);
@@ -127,11 +129,21 @@ public:
     std::vector<model::ContactRecord> records(const std::vector<bool>& touching) const;
 
 private:
-    /// A velocity change an impact gave a body at time τ·h within the step.
+    static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
+
+    /// A velocity change an impact gave a body at time τ·h within the step; `previous` chains the
+    /// same body's earlier entries.
     struct TimedImpulse {
-        std::uint32_t body = 0;
+        std::uint32_t previous = kNoImpulse;
         Scalar tau = 0;
         Vec2 velocityChange = Vec2::Zero();
+    };
+
+    /// An approaching constraint waiting in the impact heap.
+    struct Candidate {
+        Scalar velocity;
+        std::uint32_t constraint;
+        std::uint32_t version;
     };
 
     /// Where body `index` is at τ·h, moving straight with its velocity and the impacts so far.
@@ -144,6 +156,12 @@ private:
 
     std::vector<ContactConstraint> m_constraints;
     std::vector<TimedImpulse> m_impulseTimeline;
+    std::vector<std::uint32_t> m_lastTimedImpulse; ///< per body: its latest timeline entry
+    std::vector<Candidate> m_candidates; ///< the impact heap
+    std::vector<std::uint32_t> m_versions; ///< per constraint: bumped when it is looked at again
+    std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
+    std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
+    std::vector<std::uint32_t> m_bodyConstraintFill;
 };
 
 } // namespace impetus::controller

@@ -137,7 +137,8 @@ void Simulation::step(model::World& world)
     const Clock::time_point solveStart = Clock::now();
     m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives);
     m_jointSolver.prepare(world, m_bodies);
-    m_contactSolver.solveImpacts(m_bodies, h);
+    m_profile.impacts = m_contactSolver.solveImpacts(m_bodies, h);
+    m_profile.contacts = static_cast<int>(m_contactSolver.constraints().size());
     double solveMs = millisecondsSince(solveStart);
 
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.

@@ -24,6 +24,8 @@ struct StepProfile {
     double integrateMs = 0; ///< smooth forces and their integration
     double solveMs = 0; ///< impacts, contact and joint velocities, position correction
     double totalMs = 0; ///< the whole step
+    int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
+    int impacts = 0; ///< impacts resolved
 };
 
 /// Iteration counts of the constraint solvers.
