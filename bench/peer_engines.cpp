@@ -319,7 +319,7 @@ ImpetusEngine::ImpetusEngine(const model::World& world, const Turning& turning)
 void ImpetusEngine::step()
 {
     if (m_turning.angularVelocity != 0)
-        model::turnFixedBodies(m_world, m_turning.pivot, m_turning.angularVelocity * m_world.settings.timeStep);
+        model::spinFixedBodies(m_world, m_turning.pivot, m_turning.angularVelocity);
     m_simulation.step(m_world);
     const controller::StepProfile& last = m_simulation.profile();
     m_profileSum.broadMs += last.broadMs;

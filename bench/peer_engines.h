@@ -21,8 +21,9 @@ struct Pose {
 
 /// Motion a scene needs beyond what its bodies do by themselves: the fixed bodies turn about
 /// `pivot` (m) at `angularVelocity` (rad/s, counter-clockwise); 0 means they stay put. Box2D and
-/// Chipmunk do it with one kinematic body carrying every fixed shape; Impetus, which has no
-/// kinematic bodies, teleports its fixed bodies by ω·h before each step (model::turnFixedBodies).
+/// Chipmunk do it with one kinematic body carrying every fixed shape; Impetus gives its fixed
+/// bodies (which move with their own velocity) the rotation's velocity before each step
+/// (model::spinFixedBodies).
 struct Turning {
     Vec2 pivot = Vec2::Zero();
     Scalar angularVelocity = 0;

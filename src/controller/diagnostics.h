@@ -1,8 +1,8 @@
 #pragma once
 /// \file diagnostics.h
 /// Conserved and monitored quantities of a world: energy, linear and angular momentum.
-/// Fixed bodies are excluded: they have infinite mass, are at rest, and their potential energy is
-/// a constant that would only hide the changes a student is looking for.
+/// Fixed bodies are excluded: they have infinite mass and a prescribed motion, and counting them
+/// would only hide the changes a student is looking for.
 
 #include "model/scalar.h"
 #include "model/world.h"

@@ -11,8 +11,6 @@ void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h)
 
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         model::Body& body = world.bodies[i];
-        if (body.fixed)
-            continue;
         const BodyDerivative& d = m_derivatives[i];
         // Both updates use the derivative at the start of the step: this is what makes the method
         // explicit, and what makes it gain energy on oscillators.

@@ -4,11 +4,9 @@ namespace impetus::controller {
 
 namespace {
 
-/// A fixed body counts as at rest, whatever velocity its definition carries.
-Vec2 velocityOf(const model::Body& body, const model::BodyState& state, const Vec2& worldPoint)
+/// The velocity of the material point of a body at `worldPoint`.
+Vec2 velocityOf(const model::BodyState& state, const Vec2& worldPoint)
 {
-    if (body.fixed)
-        return Vec2::Zero();
     return state.velocity + cross(state.angularVelocity, Vec2(worldPoint - state.position));
 }
 
@@ -36,12 +34,12 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
     const Scalar drag = world.settings.drag;
     for (std::size_t i = 0; i < n; ++i) {
         const model::Body& body = world.bodies[i];
-        if (body.fixed)
-            continue;
         const model::BodyState& s = states[i];
+        // Every body moves with its velocity; a fixed body's never changes (no force acts on it).
         out[i].velocity = s.velocity;
         out[i].angularVelocity = s.angularVelocity;
-        out[i].acceleration = body.mass * gravity - drag * s.velocity;
+        if (!body.fixed)
+            out[i].acceleration = body.mass * gravity - drag * s.velocity;
     }
 
     for (const model::Spring& spring : world.springs) {
@@ -55,10 +53,10 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
         const Vec2 u = d / length;
 
         const model::Body& bodyA = world.bodies[spring.bodyA.index];
-        const Vec2 velA = velocityOf(bodyA, states[spring.bodyA.index], endA);
+        const Vec2 velA = velocityOf(states[spring.bodyA.index], endA);
         Vec2 velB = Vec2::Zero();
         if (spring.bodyB)
-            velB = velocityOf(world.bodies[spring.bodyB->index], states[spring.bodyB->index], endB);
+            velB = velocityOf(states[spring.bodyB->index], endB);
         const Scalar lengthRate = u.dot(velB - velA);
         const Scalar tension =
             spring.stiffness * (length - spring.restLength) + spring.damping * lengthRate;

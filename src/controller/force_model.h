@@ -29,7 +29,7 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 ///  - Stokes drag F = −b·v (b = world.settings.drag) on every dynamic body;
 ///  - each spring pulls its ends together with tension T = k·(L − L₀) + c·dL/dt along the line
 ///    between the anchors, applying the torque r × F about each centre of mass.
-/// Fixed bodies get a zero derivative, and count as at rest for spring damping.
+/// Fixed bodies get no acceleration: they keep the velocity they are given.
 /// `out` is resized to world.bodies.size().
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
                         std::vector<BodyDerivative>& out);

@@ -18,7 +18,8 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
 
-    /// Advances every body's state in `world` by h seconds. Fixed bodies do not move.
+    /// Advances every body's state in `world` by h seconds. Fixed bodies move with their own
+    /// constant velocity (none by default).
     virtual void integrate(model::World& world, Scalar h) = 0;
 
     /// Which method this is.

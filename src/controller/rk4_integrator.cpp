@@ -4,14 +4,12 @@ namespace impetus::controller {
 
 namespace {
 
-/// stage[i] = start[i] + h·k[i] for every dynamic body; fixed bodies keep their start state.
-void advance(const model::World& world, const std::vector<model::BodyState>& start,
-             const std::vector<BodyDerivative>& k, Scalar h, std::vector<model::BodyState>& stage)
+/// stage[i] = start[i] + h·k[i] for every body (a fixed body's k has no acceleration).
+void advance(const std::vector<model::BodyState>& start, const std::vector<BodyDerivative>& k, Scalar h,
+             std::vector<model::BodyState>& stage)
 {
     stage = start;
     for (std::size_t i = 0; i < start.size(); ++i) {
-        if (world.bodies[i].fixed)
-            continue;
         stage[i].position += h * k[i].velocity;
         stage[i].angle += h * k[i].angularVelocity;
         stage[i].velocity += h * k[i].acceleration;
@@ -30,18 +28,16 @@ void Rk4Integrator::integrate(model::World& world, Scalar h)
     // The four stages of the classical method, each over the whole world so that coupled bodies
     // see each other's intermediate states.
     computeDerivatives(world, m_start, m_k1);
-    advance(world, m_start, m_k1, h / 2, m_stage);
+    advance(m_start, m_k1, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k2);
-    advance(world, m_start, m_k2, h / 2, m_stage);
+    advance(m_start, m_k2, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k3);
-    advance(world, m_start, m_k3, h, m_stage);
+    advance(m_start, m_k3, h, m_stage);
     computeDerivatives(world, m_stage, m_k4);
 
     const Scalar w = h / 6;
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         model::Body& body = world.bodies[i];
-        if (body.fixed)
-            continue;
         const BodyDerivative& k1 = m_k1[i];
         const BodyDerivative& k2 = m_k2[i];
         const BodyDerivative& k3 = m_k3[i];

@@ -11,8 +11,6 @@ void SemiImplicitEulerIntegrator::integrate(model::World& world, Scalar h)
 
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         model::Body& body = world.bodies[i];
-        if (body.fixed)
-            continue;
         const BodyDerivative& d = m_derivatives[i];
         // Velocity first, then position with the *new* velocity: the symplectic order.
         body.state.velocity += h * d.acceleration;

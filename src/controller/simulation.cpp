@@ -47,8 +47,6 @@ void Simulation::collide(const model::World& world, Scalar h)
     m_margins.assign(world.bodies.size(), constants::kSpeculativeMargin);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
-        if (body.fixed)
-            continue;
         const model::BodyState& s = body.state;
         const BodyDerivative& d = m_startDerivatives[i];
         m_margins[i] += h * (s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius) +
@@ -123,10 +121,9 @@ void Simulation::step(model::World& world)
         sb.angle = body.state.angle;
         sb.invMass = body.invMass;
         sb.invInertia = body.invInertia;
-        if (!body.fixed) {
-            sb.velocity = body.state.velocity;
-            sb.angularVelocity = body.state.angularVelocity;
-        }
+        // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
+        sb.velocity = body.state.velocity;
+        sb.angularVelocity = body.state.angularVelocity;
     }
     computeDerivatives(world, m_startStates, m_startDerivatives);
 

@@ -84,7 +84,10 @@ struct Body {
     BodyState state;
     MassSpec massSpec;
     Material material;
-    bool fixed = false; ///< a fixed body never moves and feels no force (infinite mass)
+    /// A fixed body has infinite mass and feels no force: it moves only with the velocity and
+    /// angular velocity it is given (zero by default: it stays put), like a conveyor belt or a
+    /// turning drum, whatever hits it.
+    bool fixed = false;
     Color color;
     std::optional<SoftSettings> soft; ///< present: soft mode
 

@@ -217,13 +217,13 @@ World makeRotatingBoxWithCircles(int circles, const SceneOptions& options)
     return world;
 }
 
-void turnFixedBodies(World& world, const Vec2& pivot, Scalar angleDelta)
+void spinFixedBodies(World& world, const Vec2& pivot, Scalar angularVelocity)
 {
     for (Body& body : world.bodies) {
         if (!body.fixed)
             continue;
-        body.state.position = pivot + rotate(Vec2(body.state.position - pivot), angleDelta);
-        body.state.angle += angleDelta;
+        body.state.velocity = cross(angularVelocity, Vec2(body.state.position - pivot));
+        body.state.angularVelocity = angularVelocity;
     }
 }
 

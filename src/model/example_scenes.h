@@ -67,18 +67,19 @@ World makePolygonRain(int count, unsigned seed, const SceneOptions& options = {}
 /// inside a closed square container of four fixed walls 1 m thick, also centred on the origin,
 /// whose inside is about 1.5 times the grid's side.
 /// Box2D and Chipmunk make such a container a kinematic body turning at a constant angular
-/// velocity. Impetus has no kinematic bodies, so the walls are fixed, and a caller that wants the
-/// tumble turns them each step with turnFixedBodies(world, origin, kRotatingContainerAngularVelocity·h).
+/// velocity. In Impetus the walls are fixed bodies (which move with the velocity they are given),
+/// and a caller that wants the tumble calls spinFixedBodies(world, origin,
+/// kRotatingContainerAngularVelocity) before each step.
 /// Body order: bottom, right, top and left walls, then the circles row by row from the bottom,
 /// left to right. Precondition: circles ≥ 0.
 World makeRotatingBoxWithCircles(int circles = 2000, const SceneOptions& options = {});
 
-/// Rotates every fixed body of `world` counter-clockwise by `angleDelta` (rad) about `pivot` (m):
-/// position ← pivot + R(Δθ)·(position − pivot), angle ← angle + Δθ. This is a teleport, not a
-/// motion: the bodies' velocities stay zero, so a contact solver sees walls that jump a little
-/// each step rather than walls that move, and the bodies they push get no friction from the wall's
-/// surface speed (a kinematic body in Box2D or Chipmunk would give them that).
-void turnFixedBodies(World& world, const Vec2& pivot, Scalar angleDelta);
+/// Gives every fixed body of `world` the velocity of a rigid rotation at `angularVelocity`
+/// (rad/s, counter-clockwise) about `pivot` (m): v = ω × (x − pivot), angular velocity ω. A fixed
+/// body keeps its velocity through a step, so it moves along the tangent; calling this before
+/// every step turns the velocity with it and keeps the bodies on their circles (to ½ω²r·h² per
+/// step).
+void spinFixedBodies(World& world, const Vec2& pivot, Scalar angularVelocity);
 
 /// A Newton's cradle without strings: `balls` discs of radius 0.5 m touching in a row along the x
 /// axis (centres at x = 0, 1, 2, … m; y = 0), in zero gravity. Ball 0 (the leftmost) moves towards

@@ -166,6 +166,26 @@ TEST(Incline, DiskRollsWithTwoThirdsGSinTheta)
     EXPECT_NEAR(-world.bodies[1].state.angularVelocity * 0.2, downhillSpeed(world, theta), 0.01 * expected);
 }
 
+// A box set down on a conveyor belt (a fixed body moving at u) slides, accelerated by kinetic
+// friction μ·g, until it moves with the belt: v(t) = min(μ·g·t, u). The belt is not slowed.
+TEST(Friction, ConveyorBeltCarriesABoxUpToItsSpeed)
+{
+    const Scalar mu = 0.4;
+    const Scalar u = 1.5;
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
+    model::Body belt = withMaterial(makeGround("belt", 60, 0.5), 0.0, mu);
+    belt.state.velocity = Vec2(u, 0);
+    world.bodies.push_back(belt);
+    world.bodies.push_back(withMaterial(makeBox("parcel", 2.0, 0.5, 0.3, Vec2(0, 0.15)), 0.0, mu));
+    Simulation simulation;
+    run(world, simulation, 48); // 0.2 s: still slipping (μ·g·t = 0.78 m/s < u)
+    EXPECT_NEAR(world.bodies[1].state.velocity.x(), mu * kG * 0.2, 0.01 * mu * kG * 0.2);
+    run(world, simulation, 192); // 1 s: long since carried at the belt's speed
+    EXPECT_NEAR(world.bodies[1].state.velocity.x(), u, 1e-6);
+    EXPECT_EQ(world.bodies[0].state.velocity, Vec2(u, 0));
+    EXPECT_NEAR(world.bodies[1].state.position.y(), 0.15, constants::kLinearSlop);
+}
+
 // ---- Newton's cradle -------------------------------------------------------------------------
 
 /// n touching balls in a row; the first `moving` of them come in at speed v from the left.

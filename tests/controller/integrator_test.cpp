@@ -212,26 +212,38 @@ TEST(CoupledSpring, TwoBodiesOscillateAtTheReducedMassFrequency)
     EXPECT_LE(coarse / fine, 18.0);
 }
 
-// Every integrator leaves fixed bodies where they are, even under gravity and a spring.
-TEST(Integrators, FixedBodiesDoNotMove)
+// Every integrator leaves a fixed body where it is, and moves a fixed body that has a velocity at
+// exactly that velocity: no gravity, no spring changes it (infinite mass, prescribed motion).
+TEST(Integrators, FixedBodiesFeelNoForce)
 {
     for (const IntegratorKind kind : {IntegratorKind::Euler, IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4}) {
         model::World world = makeEmptyWorld(kind, 0.01, Vec2(0, -9.81));
-        world.bodies.push_back(makeBall("anchor", 1.0, 0.1, Vec2(1, 2), Vec2(5, 5)));
+        world.bodies.push_back(makeBall("anchor", 1.0, 0.1, Vec2(1, 2)));
         world.bodies[0].fixed = true;
         world.bodies[0].updateDerived();
+        world.bodies.push_back(makeBall("belt", 1.0, 0.1, Vec2(-3, 0), Vec2(0.5, -0.25)));
+        world.bodies[1].fixed = true;
+        world.bodies[1].state.angularVelocity = 2.0;
+        world.bodies[1].updateDerived();
         world.bodies.push_back(makeBall("bob", 1.0, 0.1, Vec2(1, 0)));
-        model::Spring spring;
-        spring.bodyA = model::BodyId{1};
-        spring.bodyB = model::BodyId{0};
-        spring.stiffness = 20;
-        spring.damping = 0.5;
-        spring.restLength = 1;
-        world.springs.push_back(spring);
-        const model::BodyState before = world.bodies[0].state;
+        for (const std::uint32_t other : {0u, 1u}) {
+            model::Spring spring;
+            spring.bodyA = model::BodyId{2};
+            spring.bodyB = model::BodyId{other};
+            spring.stiffness = 20;
+            spring.damping = 0.5;
+            spring.restLength = 1;
+            world.springs.push_back(spring);
+        }
+        const model::BodyState still = world.bodies[0].state;
         run(world, 100);
-        EXPECT_EQ(world.bodies[0].state, before) << model::integratorName(kind);
-        EXPECT_NE(world.bodies[1].state.position, Vec2(1, 0)) << model::integratorName(kind);
+        EXPECT_EQ(world.bodies[0].state, still) << model::integratorName(kind);
+        const model::BodyState& moving = world.bodies[1].state;
+        EXPECT_NEAR(moving.position.x(), -3 + 0.5 * 1.0, 1e-12) << model::integratorName(kind);
+        EXPECT_NEAR(moving.position.y(), -0.25 * 1.0, 1e-12) << model::integratorName(kind);
+        EXPECT_NEAR(moving.angle, 2.0, 1e-12) << model::integratorName(kind);
+        EXPECT_EQ(moving.velocity, Vec2(0.5, -0.25)) << model::integratorName(kind);
+        EXPECT_NE(world.bodies[2].state.position, Vec2(1, 0)) << model::integratorName(kind);
     }
 }
 
