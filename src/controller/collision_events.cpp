@@ -75,7 +75,7 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         e.time = world.time;
         e.bodyA = model::BodyId{c.bodyA};
         e.bodyB = model::BodyId{c.bodyB};
-        e.point = a.position + rotate(p.localAnchorA, a.angle);
+        e.point = p.point;
         e.normal = c.normal;
         e.normalImpulse = impulse;
         e.normalSpeedBefore = p.impacted ? p.approachVelocity : p.startNormalVelocity;

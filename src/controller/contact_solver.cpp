@@ -150,6 +150,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
             ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
             p.id = mp.id;
             p.separation = mp.separation;
+            p.point = mp.point;
             p.rA = mp.point - a.position;
             p.rB = mp.point - b.position;
             const Vec2 surfaceA = mp.point - 0.5 * mp.separation * c.normal;
@@ -367,8 +368,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             ContactConstraintPoint& p = c.points[ip.index];
             applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, x(i) * c.normal, bodies);
-            if (!p.impacted)
+            if (!p.impacted) {
                 p.approachVelocity = ip.velocity;
+                p.point = positionAt(c.bodyA, a, ip.tau, h) + ip.rA;
+            }
             p.impacted = true;
             p.impactImpulse += x(i);
         }

@@ -47,6 +47,7 @@ struct SolverBody {
 
 /// One point of a contact constraint.
 struct ContactConstraintPoint {
+    Vec2 point = Vec2::Zero(); ///< the contact point (for an impact, where it struck), world, m
     Vec2 rA = Vec2::Zero(); ///< from A's centre of mass to the contact point, m
     Vec2 rB = Vec2::Zero(); ///< from B's centre of mass to the contact point, m
     Vec2 localAnchorA = Vec2::Zero(); ///< A's surface point, A's frame, m (position correction)

@@ -220,6 +220,59 @@ TEST_F(Cli, FlagsOverrideTheScenesIntegratorAndStep)
     EXPECT_NEAR(s["bodies"][0]["velocity"][1].get<double>(), 4 - 0.981, 1e-12);
 }
 
+// Two equal discs meet head on (e = 1) at t = 0.75 s and bounce apart: the summary counts one
+// contact-begin, per body and in total; the CSV marks them colliding in the step they touch; the
+// collision log records the event with speeds before and after.
+TEST_F(Cli, CollisionsAreCountedMarkedAndLogged)
+{
+    const fs::path csv = tempPath("out.csv");
+    const fs::path log = tempPath("log.csv");
+    const CliResult r = run({"run", dataFile("collide.json"), "--time", "2", "--csv", csv.string(),
+                             "--collision-log", log.string(), "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(r.out);
+    EXPECT_EQ(s["collisions"].get<int>(), 1);
+    EXPECT_EQ(s["bodies"][0]["collisions"].get<int>(), 1);
+    EXPECT_EQ(s["bodies"][1]["collisions"].get<int>(), 1);
+    EXPECT_EQ(s["bodies"][2]["collisions"].get<int>(), 0);
+    EXPECT_EQ(s["bodies"][0]["colliding"], false); // apart again at the end
+    EXPECT_NEAR(s["bodies"][0]["velocity"][0].get<double>(), -2.0, 1e-9);
+    EXPECT_NEAR(s["bodies"][1]["velocity"][0].get<double>(), 2.0, 1e-9);
+
+    // Some rows, and only around t = 0.75 s, say "left" is colliding.
+    std::istringstream rows(readFile(csv));
+    std::string line;
+    std::getline(rows, line);
+    int collidingRows = 0;
+    while (std::getline(rows, line)) {
+        if (line.rfind(",1") == line.size() - 2 && line.find(",left,") != std::string::npos) {
+            ++collidingRows;
+            EXPECT_NEAR(std::stod(line.substr(0, line.find(','))), 0.75, 0.01) << line;
+        }
+    }
+    EXPECT_GE(collidingRows, 1);
+
+    std::istringstream logLines(readFile(log));
+    std::getline(logLines, line);
+    EXPECT_EQ(line, "time,bodyA,bodyB,x,y,nx,ny,normalImpulse,normalSpeedBefore,normalSpeedAfter");
+    std::vector<std::string> events;
+    while (std::getline(logLines, line))
+        events.push_back(line);
+    ASSERT_EQ(events.size(), 1u);
+    std::vector<std::string> cells;
+    std::istringstream cellStream(events[0]);
+    for (std::string cell; std::getline(cellStream, cell, ',');)
+        cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 10u);
+    EXPECT_EQ(cells[1], "left");
+    EXPECT_EQ(cells[2], "right");
+    EXPECT_NEAR(std::stod(cells[3]), 0.0, 1e-6); // they meet at the origin
+    EXPECT_NEAR(std::stod(cells[5]), 1.0, 1e-12); // normal from left to right
+    EXPECT_NEAR(std::stod(cells[7]), 4.0, 1e-9); // impulse m·Δv = 1·4 N·s
+    EXPECT_NEAR(std::stod(cells[8]), -4.0, 1e-9); // approaching at 4 m/s
+    EXPECT_NEAR(std::stod(cells[9]), 4.0, 1e-9); // leaving at 4 m/s (e = 1)
+}
+
 TEST_F(Cli, NonFiniteStateStopsWithExitOneNamingBodyAndTime)
 {
     const CliResult r = run({"run", dataFile("explodes.json"), "--steps", "5000"});

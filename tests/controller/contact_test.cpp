@@ -1,6 +1,7 @@
 // Contacts against the textbook: 1D collisions, bouncing, friction on an incline, rolling,
 // Newton's cradle, tunnelling, and the conservation laws of free bodies in zero gravity.
 
+#include "controller/contact_solver.h"
 #include "controller/diagnostics.h"
 #include "controller/simulation.h"
 #include "support/world_builders.h"
@@ -31,6 +32,20 @@ void run(model::World& world, Simulation& simulation, int steps)
 {
     for (int i = 0; i < steps; ++i)
         simulation.step(world);
+}
+
+// ---- Materials -----------------------------------------------------------------------------
+
+// Two bodies of one material behave exactly as that material: the mixing rule gives back e and μ
+// bit for bit (√(μ·μ) = μ exactly in IEEE arithmetic), and mixes unlike ones as documented.
+TEST(Materials, OneMaterialMixesToItselfExactly)
+{
+    for (const Scalar x : {0.0, 0.05, 0.3, 1.0 / 3.0, 0.61, 0.999, 1.0, 1.7}) {
+        EXPECT_EQ(mixFriction(x, x), x);
+        EXPECT_EQ(mixRestitution(x, x), x);
+    }
+    EXPECT_DOUBLE_EQ(mixFriction(0.2, 0.8), 0.4);
+    EXPECT_EQ(mixRestitution(0.2, 0.8), 0.8);
 }
 
 // ---- 1D collisions -------------------------------------------------------------------------
