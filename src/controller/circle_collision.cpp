@@ -23,18 +23,6 @@ Manifold onePoint(const Vec2& normal, const Vec2& surfaceA, const Vec2& surfaceB
     return m;
 }
 
-/// NaN input (a body flung to infinity) must not reach the solver as a NaN impulse: report no
-/// contact instead, and let the simulation's own checks notice the bad state.
-Manifold finiteOrEmpty(const Manifold& m)
-{
-    for (int i = 0; i < m.count; ++i) {
-        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
-        if (!isFinite(p.point) || !std::isfinite(p.separation))
-            return {};
-    }
-    return m.count > 0 && !isFinite(m.normal) ? Manifold{} : m;
-}
-
 Manifold polygonCircle(const PolygonShape& a, const CircleShape& b, Scalar speculativeDistance)
 {
     const std::size_t n = a.vertices.size();
@@ -97,12 +85,12 @@ Manifold collideCircles(const CircleShape& a, const CircleShape& b, Scalar specu
     // Coincident centres leave every direction equally good; +y is as arbitrary as any but fixed,
     // so the same scene always gets the same push.
     const Vec2 normal = distance > 0 ? Vec2(d / distance) : Vec2(0, 1);
-    return finiteOrEmpty(onePoint(normal, a.center + a.radius * normal, b.center - b.radius * normal, 0));
+    return discardNonFinite(onePoint(normal, a.center + a.radius * normal, b.center - b.radius * normal, 0));
 }
 
 Manifold collidePolygonCircle(const PolygonShape& a, const CircleShape& b, Scalar speculativeDistance)
 {
-    return finiteOrEmpty(polygonCircle(a, b, speculativeDistance));
+    return discardNonFinite(polygonCircle(a, b, speculativeDistance));
 }
 
 } // namespace impetus::controller

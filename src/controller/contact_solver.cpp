@@ -17,29 +17,6 @@ constexpr Scalar kMaxBlockConditionNumber = 1000.0;
 /// The tangent of a contact: the normal turned clockwise, so (n, t) is a right-handed pair.
 Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
 
-Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
-{
-    return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
-}
-
-/// Applies impulse P at the contact: −P on A, +P on B.
-void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
-{
-    a.velocity -= a.invMass * impulse;
-    a.angularVelocity -= a.invInertia * cross(rA, impulse);
-    b.velocity += b.invMass * impulse;
-    b.angularVelocity += b.invInertia * cross(rB, impulse);
-}
-
-/// The effective mass 1/K for an impulse along `direction` at rA, rB; 0 when nothing can move.
-Scalar effectiveMass(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& direction)
-{
-    const Scalar rnA = cross(rA, direction);
-    const Scalar rnB = cross(rB, direction);
-    const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
-    return k > 0 ? 1 / k : 0;
-}
-
 /// Time t in (0, h] at which a gap s closes under relative normal velocity vn and acceleration a:
 /// the smallest root of s + vn·t + ½a·t² = 0. Negative when the gap does not close within h.
 Scalar timeToClose(Scalar s, Scalar vn, Scalar a, Scalar h)
@@ -538,11 +515,7 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies)
             const Vec2 rA = mid - a.position;
             const Vec2 rB = mid - b.position;
             const Scalar mass = effectiveMass(a, b, rA, rB, n);
-            const Vec2 impulse = (-correction * mass) * n;
-            a.position -= a.invMass * impulse;
-            a.angle -= a.invInertia * cross(rA, impulse);
-            b.position += b.invMass * impulse;
-            b.angle += b.invInertia * cross(rB, impulse);
+            applyPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
         }
     }
     // Allow a little more than the slop before calling it solved, as the iterations converge

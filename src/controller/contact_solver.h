@@ -15,6 +15,7 @@
 
 #include "controller/collision_types.h"
 #include "controller/force_model.h"
+#include "controller/solver_body.h"
 #include "model/scalar.h"
 #include "model/world.h"
 
@@ -27,23 +28,6 @@
 #include <vector>
 
 namespace impetus::controller {
-
-/// A body as the constraint solvers see it: velocity, pose and inverse mass properties. Fixed
-/// bodies have zero inverse mass and zero velocity.
-struct SolverBody {
-    Vec2 velocity = Vec2::Zero(); ///< m/s
-    Scalar angularVelocity = 0; ///< rad/s
-    Vec2 position = Vec2::Zero(); ///< centre of mass, m (moved by position correction)
-    Scalar angle = 0; ///< rad (moved by position correction)
-    Scalar invMass = 0; ///< 1/kg
-    Scalar invInertia = 0; ///< 1/(kg·m²)
-    /// Impact impulses applied at time of impact τ·h, summed as Σ τ·Δv: the part of the impact's
-    /// velocity change that must not count for the time before the impact (m/s, rad/s).
-    Vec2 impactLateVelocity = Vec2::Zero();
-    Scalar impactLateAngularVelocity = 0;
-    bool hadImpact = false; ///< an impact impulse acted on this body this step
-    bool hadContactForce = false; ///< a contact-force or joint impulse acted on this body this step
-};
 
 /// One point of a contact constraint.
 struct ContactConstraintPoint {

@@ -29,27 +29,12 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
     return det != 0 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
 }
 
-void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+/// A joint's impulse: it holds both bodies, which therefore finish the step as constrained ones.
+void applyJointImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
 {
-    a.velocity -= a.invMass * impulse;
-    a.angularVelocity -= a.invInertia * cross(rA, impulse);
-    b.velocity += b.invMass * impulse;
-    b.angularVelocity += b.invInertia * cross(rB, impulse);
+    applyImpulse(a, b, rA, rB, impulse);
     a.hadContactForce = true;
     b.hadContactForce = true;
-}
-
-void applyPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
-{
-    a.position -= a.invMass * impulse;
-    a.angle -= a.invInertia * cross(rA, impulse);
-    b.position += b.invMass * impulse;
-    b.angle += b.invInertia * cross(rB, impulse);
-}
-
-Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
-{
-    return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
 }
 
 } // namespace
@@ -100,7 +85,7 @@ void JointSolver::warmStart(std::span<SolverBody> bodies)
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
         const Vec2 impulse = c.type == model::JointType::Pin ? c.impulse : Vec2(c.impulse.x() * c.axis);
-        applyImpulse(a, b, c.rA, c.rB, impulse);
+        applyJointImpulse(a, b, c.rA, c.rB, impulse);
     }
 }
 
@@ -120,11 +105,11 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
         if (c.type == model::JointType::Pin) {
             const Vec2 impulse = -(c.pinMass * Vec2(predicted / h));
             c.impulse += impulse;
-            applyImpulse(a, b, c.rA, c.rB, impulse);
+            applyJointImpulse(a, b, c.rA, c.rB, impulse);
         } else {
             const Scalar lambda = -c.rodMass * (predicted.norm() - c.length) / h;
             c.impulse.x() += lambda;
-            applyImpulse(a, b, c.rA, c.rB, lambda * c.axis);
+            applyJointImpulse(a, b, c.rA, c.rB, lambda * c.axis);
         }
     }
 }

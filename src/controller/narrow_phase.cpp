@@ -3,6 +3,8 @@
 
 #include "controller/narrow_phase.h"
 
+#include <cmath>
+
 namespace impetus::controller {
 
 namespace {
@@ -34,6 +36,16 @@ Manifold collide(const ConvexShape& a, const ConvexShape& b, Scalar speculativeD
     if (const auto* polygonB = std::get_if<PolygonShape>(&b))
         return flipped(collidePolygonCircle(*polygonB, circleA, speculativeDistance));
     return collideCircles(circleA, std::get<CircleShape>(b), speculativeDistance);
+}
+
+Manifold discardNonFinite(const Manifold& m)
+{
+    for (int i = 0; i < m.count; ++i) {
+        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+        if (!isFinite(p.point) || !std::isfinite(p.separation))
+            return {};
+    }
+    return m.count > 0 && !isFinite(m.normal) ? Manifold{} : m;
 }
 
 } // namespace impetus::controller

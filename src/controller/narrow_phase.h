@@ -56,6 +56,10 @@ Manifold collidePolygonCircle(const PolygonShape& a, const CircleShape& b, Scala
 /// Circle–circle.
 Manifold collideCircles(const CircleShape& a, const CircleShape& b, Scalar speculativeDistance);
 
+/// `m`, or no contact when any of its numbers is NaN or infinite: a body flung to infinity must
+/// not reach the solver as a NaN impulse; the simulation's own checks notice the bad state.
+Manifold discardNonFinite(const Manifold& m);
+
 /// Any pair in which one shape (or both) is an ellipse: GJK + EPA on support functions.
 Manifold collideConvexGeneral(const ConvexShape& a, const ConvexShape& b, Scalar speculativeDistance);
 

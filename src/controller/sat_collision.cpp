@@ -187,17 +187,6 @@ Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculati
     return m;
 }
 
-/// See circle_collision.cpp: a NaN must not reach the solver.
-Manifold finiteOrEmpty(const Manifold& m)
-{
-    for (int i = 0; i < m.count; ++i) {
-        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
-        if (!isFinite(p.point) || !std::isfinite(p.separation))
-            return {};
-    }
-    return m.count > 0 && !isFinite(m.normal) ? Manifold{} : m;
-}
-
 } // namespace
 
 Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance)
@@ -206,7 +195,7 @@ Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar sp
                             b.vertices.size() >= 3 && b.normals.size() == b.vertices.size();
     if (!wellFormed) // a segment or a point has no face normals to test: GJK copes with it
         return collideConvexGeneral(a, b, speculativeDistance);
-    return finiteOrEmpty(polygons(a, b, speculativeDistance));
+    return discardNonFinite(polygons(a, b, speculativeDistance));
 }
 
 } // namespace impetus::controller

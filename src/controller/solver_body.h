@@ -1,0 +1,61 @@
+#pragma once
+/// \file solver_body.h
+/// A body as the contact and joint solvers see it, and the impulse arithmetic they share.
+
+#include "model/scalar.h"
+
+namespace impetus::controller {
+
+/// A body as the constraint solvers see it: velocity, pose and inverse mass properties. Fixed
+/// bodies have zero inverse mass and zero velocity.
+struct SolverBody {
+    Vec2 velocity = Vec2::Zero(); ///< m/s
+    Scalar angularVelocity = 0; ///< rad/s
+    Vec2 position = Vec2::Zero(); ///< centre of mass, m (moved by position correction)
+    Scalar angle = 0; ///< rad (moved by position correction)
+    Scalar invMass = 0; ///< 1/kg
+    Scalar invInertia = 0; ///< 1/(kg·m²)
+    /// Impact impulses applied at time of impact τ·h, summed as Σ τ·Δv: the part of the impact's
+    /// velocity change that must not count for the time before the impact (m/s, rad/s).
+    Vec2 impactLateVelocity = Vec2::Zero();
+    Scalar impactLateAngularVelocity = 0;
+    bool hadImpact = false; ///< an impact impulse acted on this body this step
+    bool hadContactForce = false; ///< a contact-force or joint impulse acted on this body this step
+};
+
+/// The velocity of B's material point at rB relative to A's at rA, m/s.
+inline Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+{
+    return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
+}
+
+/// Applies the impulse P (N·s) at the contact: −P on A at rA, +P on B at rB.
+inline void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    a.velocity -= a.invMass * impulse;
+    a.angularVelocity -= a.invInertia * cross(rA, impulse);
+    b.velocity += b.invMass * impulse;
+    b.angularVelocity += b.invInertia * cross(rB, impulse);
+}
+
+/// Moves the bodies as the position-level impulse P would (non-linear Gauss–Seidel): −P on A at
+/// rA, +P on B at rB, in m·kg.
+inline void applyPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    a.position -= a.invMass * impulse;
+    a.angle -= a.invInertia * cross(rA, impulse);
+    b.position += b.invMass * impulse;
+    b.angle += b.invInertia * cross(rB, impulse);
+}
+
+/// The effective mass 1/K (kg) for an impulse along `direction` at rA, rB; 0 when nothing can move.
+inline Scalar effectiveMass(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB,
+                            const Vec2& direction)
+{
+    const Scalar rnA = cross(rA, direction);
+    const Scalar rnB = cross(rB, direction);
+    const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+    return k > 0 ? 1 / k : 0;
+}
+
+} // namespace impetus::controller
