@@ -35,6 +35,8 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         if (r.touching)
             before.emplace_back(r.bodyA.index, r.bodyB.index);
     }
+    // Records are sorted by pieces, so a concave body's pairs can come out of body order: sort.
+    std::sort(before.begin(), before.end());
     before.erase(std::unique(before.begin(), before.end()), before.end());
 
     for (model::Body& body : world.bodies)

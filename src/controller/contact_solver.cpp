@@ -205,10 +205,15 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     };
     const auto approachOf = [&](const ContactConstraint& c, const ContactConstraintPoint& p) {
         Approach result;
-        if (p.carriesLoad)
-            return result;
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
+        // A resting contact stays out of the impact pass until an impact strikes one of its
+        // bodies: then the blow travels on through it (a ball dropped on a ball resting on the
+        // floor bounces back up, as a vertical Newton's cradle does).
+        if (p.carriesLoad && !a.hadImpact && !b.hadImpact)
+            return result;
+        const Scalar threshold =
+            p.carriesLoad ? constants::kRestingImpactThreshold : constants::kRestitutionThreshold;
         const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
         if (p.separation <= constants::kTouchDistance) {
             result.tau = 0;
@@ -219,6 +224,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             result.tau = t / h;
         }
         result.velocity = vn + p.normalAcceleration * result.tau * h;
+        if (result.velocity >= -threshold)
+            result.tau = -1; // not an impact: too slow for this kind of contact
         return result;
     };
 
@@ -361,8 +368,11 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             const Scalar jt = std::clamp(-vt * effectiveMass(a, b, ip.rA, ip.rB, t), -limit, limit);
             applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, jt * t, bodies);
         }
-        a.hadImpact = true;
-        b.hadImpact = true;
+        // Only a body that can move has been struck (a fixed body's contacts keep their status).
+        for (SolverBody* body : {&a, &b}) {
+            if (body->invMass > 0 || body->invInertia > 0)
+                body->hadImpact = true;
+        }
 
         // Everything touching a body that just changed velocity may now approach (or stop).
         // Fixed bodies never change, so their many contacts need no second look.
@@ -395,6 +405,8 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     SolverBody& a = bodies[c.bodyA];
     SolverBody& b = bodies[c.bodyB];
     applyImpulse(a, b, rA, rB, impulse);
+    a.firstImpactTau = std::min(a.firstImpactTau, tau);
+    b.firstImpactTau = std::min(b.firstImpactTau, tau);
     const Vec2 dvA = -a.invMass * impulse;
     const Vec2 dvB = b.invMass * impulse;
     a.impactLateVelocity += tau * dvA;
@@ -402,6 +414,8 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     b.impactLateVelocity += tau * dvB;
     b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
     for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
+        if (bodies[body].invMass == 0 && bodies[body].invInertia == 0)
+            continue; // a fixed body's motion never changes: nothing to remember
         m_impulseTimeline.push_back({m_lastTimedImpulse[body], tau, dv});
         m_lastTimedImpulse[body] = static_cast<std::uint32_t>(m_impulseTimeline.size() - 1);
     }

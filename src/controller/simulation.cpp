@@ -2,7 +2,9 @@
 
 #include "controller/narrow_phase.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace impetus::controller {
 
@@ -44,6 +46,15 @@ void Simulation::collide(const model::World& world, Scalar h)
     // Each body's speculative margin: how far its surface can move in one step (translation,
     // rotation at its bounding radius, and what its acceleration adds), plus a constant margin so
     // that resting contacts exist before the surfaces touch.
+    // A body at rest can also be struck and set moving within the step: one impact hands on at
+    // most twice the striker's speed (e ≤ 1), so every dynamic body also gets 2·h times the
+    // fastest body's speed, and a struck ball finds the wall just behind it.
+    Scalar fastest = 0;
+    for (const model::Body& body : world.bodies) {
+        if (!body.fixed)
+            fastest = std::max(fastest, body.state.velocity.norm() +
+                                            std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
+    }
     m_margins.assign(world.bodies.size(), constants::kSpeculativeMargin);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
@@ -51,6 +62,8 @@ void Simulation::collide(const model::World& world, Scalar h)
         const BodyDerivative& d = m_startDerivatives[i];
         m_margins[i] += h * (s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius) +
                         h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+        if (!body.fixed)
+            m_margins[i] += 2 * h * fastest;
     }
     m_colliders.build(world, m_margins);
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
@@ -84,13 +97,21 @@ void Simulation::integratePositions(model::World& world, Scalar h)
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         model::Body& body = world.bodies[i];
         SolverBody& sb = m_bodies[i];
-        if (body.fixed)
-            continue;
-        const model::BodyState& start = m_startStates[i];
         model::BodyState& s = body.state;
+        if (body.fixed) {
+            // The integrator moved it with its own velocity; position correction must see that.
+            sb.position = s.position;
+            sb.angle = s.angle;
+            continue;
+        }
+        const model::BodyState& start = m_startStates[i];
         if (sb.hadContactForce) {
-            s.position = start.position + h * (sb.velocity - sb.impactLateVelocity);
-            s.angle = start.angle + h * (sb.angularVelocity - sb.impactLateAngularVelocity);
+            // Until its first impact the body moved with its start velocity, then with its final
+            // one. (Written with the final velocity alone, an impact that a contact force then
+            // cancels would still move the body.)
+            const Scalar tau = sb.hadImpact ? sb.firstImpactTau : 0.0;
+            s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity);
+            s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity);
         } else if (sb.hadImpact) {
             // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
             s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);

@@ -20,6 +20,7 @@ struct SolverBody {
     Vec2 impactLateVelocity = Vec2::Zero();
     Scalar impactLateAngularVelocity = 0;
     bool hadImpact = false; ///< an impact impulse acted on this body this step
+    Scalar firstImpactTau = 1; ///< the earliest impact on this body, as a fraction of the step
     bool hadContactForce = false; ///< a contact-force or joint impulse acted on this body this step
 };
 

@@ -48,6 +48,13 @@ inline constexpr Scalar kSpeculativeMargin = 4 * kLinearSlop;
 /// are below ~5 µm high.
 inline constexpr Scalar kRestitutionThreshold = 0.01;
 
+/// A contact that carried load in the last step (a resting contact) is struck only by a blow
+/// faster than this, m/s, and only after an impact has hit one of its bodies in the step. 10 cm/s
+/// is ten times the bounce threshold and well above the 1–2 cm/s at which a tall stack settles
+/// between steps, so a struck ball passes its blow on through the ball it rests on, while a
+/// settling pyramid never sets off a cascade of tiny impacts.
+inline constexpr Scalar kRestingImpactThreshold = 0.1;
+
 /// A contact point within this distance (or carrying impulse) counts as touching, m: the same
 /// tolerance the position correction allows.
 inline constexpr Scalar kTouchDistance = kLinearSlop;
