@@ -1,5 +1,6 @@
 #include "controller/contact_solver.h"
 
+#include "controller/transform.h"
 #include "model/constants.h"
 
 #include <algorithm>
@@ -260,16 +261,17 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
         consider(ci);
 
-    // Which constraints each body takes part in, to find those an impact affects.
-    m_bodyConstraintStart.assign(bodies.size() + 1, 0);
-    for (const ContactConstraint& c : m_constraints) {
-        ++m_bodyConstraintStart[c.bodyA + 1];
-        ++m_bodyConstraintStart[c.bodyB + 1];
-    }
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-        m_bodyConstraintStart[i + 1] += m_bodyConstraintStart[i];
-    m_bodyConstraints.resize(m_bodyConstraintStart.back());
-    {
+    // Which constraints each body takes part in, to find those an impact affects. Built only
+    // when some contact approaches: a resting scene, the common case, never needs it.
+    if (!heap.empty()) {
+        m_bodyConstraintStart.assign(bodies.size() + 1, 0);
+        for (const ContactConstraint& c : m_constraints) {
+            ++m_bodyConstraintStart[c.bodyA + 1];
+            ++m_bodyConstraintStart[c.bodyB + 1];
+        }
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+            m_bodyConstraintStart[i + 1] += m_bodyConstraintStart[i];
+        m_bodyConstraints.resize(m_bodyConstraintStart.back());
         std::vector<std::uint32_t>& fill = m_bodyConstraintFill;
         fill.assign(m_bodyConstraintStart.begin(), m_bodyConstraintStart.end() - 1);
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
@@ -515,9 +517,11 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies)
         SolverBody& b = bodies[c.bodyB];
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-            // Current separation of the two surface points along the normal, which turns with A.
-            const Vec2 n = rotate(c.localNormalA, a.angle);
-            const Vec2 pointA = a.position + rotate(p.localAnchorA, a.angle);
+            // Current separation of the two surface points along the normal, which turns with A
+            // (A's rotation is taken once for both).
+            const Transform frameA{a.position, std::cos(a.angle), std::sin(a.angle)};
+            const Vec2 n = frameA.rotate(c.localNormalA);
+            const Vec2 pointA = frameA.apply(p.localAnchorA);
             const Vec2 pointB = b.position + rotate(p.localAnchorB, b.angle);
             const Scalar separation = (pointB - pointA).dot(n);
             deepest = std::min(deepest, separation);
