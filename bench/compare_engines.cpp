@@ -361,7 +361,10 @@ void runScene(const Scene& scene, int steps, const std::vector<std::string>& eng
     const double n = steps;
     std::cout << "\nImpetus phases, mean ms/step: broad " << fixed(p.broadMs / n, 3) << ", narrow "
               << fixed(p.narrowMs / n, 3) << ", integrate " << fixed(p.integrateMs / n, 3) << ", solve "
-              << fixed(p.solveMs / n, 3) << "; total " << fixed(p.totalMs / n, 3) << "\n"
+              << fixed(p.solveMs / n, 3) << " (prepare " << fixed(p.prepareMs / n, 3) << ", impacts "
+              << fixed(p.impactsMs / n, 3) << ", velocities " << fixed(p.velocityMs / n, 3) << ", positions "
+              << fixed(p.positionMs / n, 3) << "), events " << fixed(p.eventsMs / n, 3) << "; total "
+              << fixed(p.totalMs / n, 3) << "\n"
               << std::flush;
 }
 

@@ -326,6 +326,11 @@ void ImpetusEngine::step()
     m_profileSum.narrowMs += last.narrowMs;
     m_profileSum.integrateMs += last.integrateMs;
     m_profileSum.solveMs += last.solveMs;
+    m_profileSum.prepareMs += last.prepareMs;
+    m_profileSum.impactsMs += last.impactsMs;
+    m_profileSum.velocityMs += last.velocityMs;
+    m_profileSum.positionMs += last.positionMs;
+    m_profileSum.eventsMs += last.eventsMs;
     m_profileSum.totalMs += last.totalMs;
 }
 

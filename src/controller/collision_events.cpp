@@ -29,32 +29,52 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
                                                  std::span<const SolverBody> bodies,
                                                  const std::vector<model::ContactRecord>& previous)
 {
-    // Body pairs that touched at the end of the last step (sorted, since records are).
+    // Body pairs that touched at the end of the last step. Records are sorted by pieces, which is
+    // body-pair order unless a concave body has several pieces: sort only then.
     std::vector<BodyPair> before;
     for (const model::ContactRecord& r : previous) {
         if (r.touching)
             before.emplace_back(r.bodyA.index, r.bodyB.index);
     }
-    // Records are sorted by pieces, so a concave body's pairs can come out of body order: sort.
-    std::sort(before.begin(), before.end());
+    if (!std::is_sorted(before.begin(), before.end()))
+        std::sort(before.begin(), before.end());
     before.erase(std::unique(before.begin(), before.end()), before.end());
 
     for (model::Body& body : world.bodies)
         body.colliding = false;
 
     const std::vector<ContactConstraint>& constraints = contacts.constraints();
-    std::vector<bool> touching(constraints.size(), false);
+    std::vector<model::ContactRecord>& records = world.contacts;
+    records.clear();
+    records.reserve(constraints.size());
     std::vector<CollisionEvent> events;
-    for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
-        const ContactConstraint& c = constraints[ci];
-        touching[ci] = isTouching(c);
-        if (!touching[ci])
+    // Constraints come in the same order as `before` (again, up to concave bodies): a cursor finds
+    // most pairs, and a binary search the rest.
+    std::size_t cursor = 0;
+    for (const ContactConstraint& c : constraints) {
+        model::ContactRecord& r = records.emplace_back();
+        r.bodyA = model::BodyId{c.bodyA};
+        r.pieceA = c.pieceA;
+        r.bodyB = model::BodyId{c.bodyB};
+        r.pieceB = c.pieceB;
+        r.pointCount = static_cast<std::uint8_t>(c.pointCount);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+            r.featureIds[i] = c.points[i].id;
+            r.normalImpulses[i] = c.points[i].normalImpulse;
+            r.tangentImpulses[i] = c.points[i].tangentImpulse;
+        }
+        r.touching = isTouching(c);
+        if (!r.touching)
             continue;
         world.bodies[c.bodyA].colliding = true;
         world.bodies[c.bodyB].colliding = true;
 
         const BodyPair pair(c.bodyA, c.bodyB);
-        if (std::binary_search(before.begin(), before.end(), pair))
+        while (cursor < before.size() && before[cursor] < pair)
+            ++cursor;
+        const bool touchedBefore = (cursor < before.size() && before[cursor] == pair) ||
+                                   std::binary_search(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(cursor), pair);
+        if (touchedBefore)
             continue;
         // A pair of bodies may touch through several pieces: the first touching one opens the
         // event and the others add their impulse to it.
@@ -93,7 +113,6 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         ++world.bodies[e.bodyB.index].collisionCount;
         ++world.collisionCount;
     }
-    world.contacts = contacts.records(touching);
     return events;
 }
 

@@ -56,7 +56,9 @@ PairKey keyOf(const model::ContactRecord& r) { return {r.bodyA.index, r.pieceA, 
 
 /// Solves the complementarity problem x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0 for one or two points by
 /// enumerating the active sets (exact for two points). Returns x.
-Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Vector2d& b, int count)
+/// `kInverse` is K⁻¹ when count is 2 and K is regular (any value otherwise).
+Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Matrix2d& kInverse, const Eigen::Vector2d& b,
+                                 int count)
 {
     if (count == 1) {
         const Scalar x = k(0, 0) > 0 ? std::max(0.0, -b(0) / k(0, 0)) : 0.0;
@@ -64,7 +66,7 @@ Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Vector2d
     }
     const Scalar det = k(0, 0) * k(1, 1) - k(0, 1) * k(1, 0);
     if (std::abs(det) > 0) {
-        const Eigen::Vector2d x = -k.inverse() * b;
+        const Eigen::Vector2d x = -kInverse * b;
         if (x(0) >= 0 && x(1) >= 0)
             return x;
     }
@@ -79,6 +81,151 @@ Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Vector2d
             return Eigen::Vector2d(0, x2);
     }
     return Eigen::Vector2d::Zero();
+}
+
+/// A body that can move. Fixed bodies are never written to, so that the two halves of a split
+/// world, which share the ground, never write to the same memory.
+bool movable(const SolverBody& body) { return body.invMass > 0 || body.invInertia > 0; }
+
+/// applyImpulse for contacts: the same arithmetic, leaving fixed bodies untouched (for finite
+/// impulses their velocity would not change anyway: v − 0·P = v).
+void applyContactImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    if (movable(a)) {
+        a.velocity -= a.invMass * impulse;
+        a.angularVelocity -= a.invInertia * cross(rA, impulse);
+    }
+    if (movable(b)) {
+        b.velocity += b.invMass * impulse;
+        b.angularVelocity += b.invInertia * cross(rB, impulse);
+    }
+}
+
+/// applyPositionImpulse, leaving fixed bodies untouched.
+void applyContactPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
+{
+    if (movable(a)) {
+        a.position -= a.invMass * impulse;
+        a.angle -= a.invInertia * cross(rA, impulse);
+    }
+    if (movable(b)) {
+        b.position += b.invMass * impulse;
+        b.angle += b.invInertia * cross(rB, impulse);
+    }
+}
+
+/// Marks the movable ones of a contact's bodies as held by a contact force.
+void markContactForce(SolverBody& a, SolverBody& b)
+{
+    if (movable(a))
+        a.hadContactForce = true;
+    if (movable(b))
+        b.hadContactForce = true;
+}
+
+/// One sequential-impulse update of one constraint: friction, then the normal constraints.
+void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<SolverBody> bodies)
+{
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    const Vec2 n = c.normal;
+    const Vec2 t = tangentOf(n);
+    bool acted = false;
+
+    // Friction first, limited by the normal impulse of the last pass: the normal constraint is the
+    // more important one and so gets the last word.
+    for (int i = 0; i < c.pointCount; ++i) {
+        ContactSolver::VelocityPoint& p = c.points[static_cast<std::size_t>(i)];
+        const Scalar vt = relativeVelocity(a, b, p.rA, p.rB).dot(t);
+        const Scalar limit = c.friction * p.normalImpulse;
+        const Scalar updated = std::clamp(p.tangentImpulse - vt * p.tangentMass, -limit, limit);
+        const Scalar delta = updated - p.tangentImpulse;
+        p.tangentImpulse = updated;
+        if (delta != 0) {
+            applyContactImpulse(a, b, p.rA, p.rB, delta * t);
+            acted = true;
+        }
+    }
+
+    // Normal: vn ≥ −s⁺/h. A speculative point (s > 0) may approach by its gap and no more, which
+    // is what stops a fast body at the surface instead of letting it tunnel; a touching or
+    // overlapping point may not approach at all (overlap is the position solver's job).
+    if (c.blockSolve) {
+        ContactSolver::VelocityPoint& p1 = c.points[0];
+        ContactSolver::VelocityPoint& p2 = c.points[1];
+        const Scalar old1 = p1.normalImpulse;
+        const Scalar old2 = p2.normalImpulse;
+        // b = vn − K·old: the velocity without this constraint's accumulated impulse. The total
+        // impulse x solves the LCP x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0, by trying its active sets.
+        const Scalar b1 = relativeVelocity(a, b, p1.rA, p1.rB).dot(n) + p1.gapSpeed - (c.k11 * old1 + c.k12 * old2);
+        const Scalar b2 = relativeVelocity(a, b, p2.rA, p2.rB).dot(n) + p2.gapSpeed - (c.k12 * old1 + c.k22 * old2);
+        Scalar x1 = -(c.inverse11 * b1 + c.inverse12 * b2);
+        Scalar x2 = -(c.inverse12 * b1 + c.inverse22 * b2);
+        if (!(x1 >= 0 && x2 >= 0)) {
+            x1 = -b1 / c.k11; // both points but the first inactive
+            x2 = 0;
+            if (!(x1 >= 0 && c.k12 * x1 + b2 >= 0)) {
+                x1 = 0;
+                x2 = -b2 / c.k22;
+                if (!(x2 >= 0 && c.k12 * x2 + b1 >= 0))
+                    x2 = 0;
+            }
+        }
+        p1.normalImpulse = x1;
+        p2.normalImpulse = x2;
+        const Scalar delta1 = x1 - old1;
+        const Scalar delta2 = x2 - old2;
+        if (delta1 != 0 || delta2 != 0) {
+            applyContactImpulse(a, b, p1.rA, p1.rB, delta1 * n);
+            applyContactImpulse(a, b, p2.rA, p2.rB, delta2 * n);
+            acted = true;
+        }
+    } else {
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactSolver::VelocityPoint& p = c.points[static_cast<std::size_t>(i)];
+            const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(n) + p.gapSpeed;
+            const Scalar updated = std::max(p.normalImpulse - vn * p.normalMass, 0.0);
+            const Scalar delta = updated - p.normalImpulse;
+            p.normalImpulse = updated;
+            if (delta != 0) {
+                applyContactImpulse(a, b, p.rA, p.rB, delta * n);
+                acted = true;
+            }
+        }
+    }
+    c.acted = c.acted || acted;
+}
+
+/// One non-linear Gauss–Seidel update of one constraint's positions. Returns the deepest
+/// separation it saw (≤ 0), m.
+Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies)
+{
+    Scalar deepest = 0;
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+        // Current separation of the two surface points along the normal, which turns with A (A's
+        // rotation is taken once for both).
+        const Transform frameA{a.position, std::cos(a.angle), std::sin(a.angle)};
+        const Vec2 n = frameA.rotate(c.localNormalA);
+        const Vec2 pointA = frameA.apply(p.localAnchorA);
+        const Vec2 pointB = b.position + rotate(p.localAnchorB, b.angle);
+        const Scalar separation = (pointB - pointA).dot(n);
+        deepest = std::min(deepest, separation);
+
+        const Scalar correction =
+            std::clamp(constants::kPositionCorrectionFactor * (separation + constants::kLinearSlop),
+                       -constants::kMaxPositionCorrection, 0.0);
+        if (correction == 0)
+            continue;
+        const Vec2 mid = 0.5 * (pointA + pointB);
+        const Vec2 rA = mid - a.position;
+        const Vec2 rB = mid - b.position;
+        const Scalar mass = effectiveMass(a, b, rA, rB, n);
+        applyContactPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
+    }
+    return deepest;
 }
 
 } // namespace
@@ -349,7 +496,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             }
             count = 1;
         }
-        const Eigen::Vector2d x = solveTwoPointLcp(k, bias, count);
+        const Eigen::Vector2d x = solveTwoPointLcp(k, count == 2 ? Eigen::Matrix2d(k.inverse()) : k, bias, count);
 
         const Vec2 t = tangentOf(c.normal);
         for (int i = 0; i < count; ++i) {
@@ -425,145 +572,164 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     }
 }
 
-void ContactSolver::warmStart(std::span<SolverBody> bodies)
+void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 {
-    for (const ContactConstraint& c : m_constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        const Vec2 t = tangentOf(c.normal);
-        for (int i = 0; i < c.pointCount; ++i) {
-            const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-            if (p.normalImpulse == 0 && p.tangentImpulse == 0)
-                continue;
-            applyImpulse(a, b, p.rA, p.rB, p.normalImpulse * c.normal + p.tangentImpulse * t);
-            a.hadContactForce = true;
-            b.hadContactForce = true;
+    // The velocity passes see only what they need, packed in solving order: a third of the
+    // constraint's size, read front to back, eight times a step.
+    m_velocityConstraints.resize(m_constraints.size());
+    std::size_t slot = 0;
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        m_groupStart[g] = slot;
+        for (const std::uint32_t ci : m_groups[g]) {
+            const ContactConstraint& c = m_constraints[ci];
+            VelocityConstraint& v = m_velocityConstraints[slot++];
+            v.bodyA = c.bodyA;
+            v.bodyB = c.bodyB;
+            v.pointCount = c.pointCount;
+            v.blockSolve = c.pointCount == 2 && c.blockSolve;
+            v.acted = false;
+            v.normal = c.normal;
+            v.friction = c.friction;
+            v.k11 = c.k(0, 0);
+            v.k12 = c.k(0, 1);
+            v.k22 = c.k(1, 1);
+            v.inverse11 = c.normalMassBlock(0, 0);
+            v.inverse12 = c.normalMassBlock(0, 1);
+            v.inverse22 = c.normalMassBlock(1, 1);
+            for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                const ContactConstraintPoint& p = c.points[i];
+                VelocityPoint& q = v.points[i];
+                q.rA = p.rA;
+                q.rB = p.rB;
+                q.normalMass = p.normalMass;
+                q.tangentMass = p.tangentMass;
+                q.normalImpulse = p.normalImpulse;
+                q.tangentImpulse = p.tangentImpulse;
+                q.gapSpeed = std::max(p.separation, 0.0) / h;
+            }
         }
     }
+    m_groupStart[m_groups.size()] = slot;
+    forEachGroup([&](std::span<VelocityConstraint> group, int) {
+        for (VelocityConstraint& v : group) {
+            SolverBody& a = bodies[v.bodyA];
+            SolverBody& b = bodies[v.bodyB];
+            const Vec2 t = tangentOf(v.normal);
+            for (int i = 0; i < v.pointCount; ++i) {
+                const VelocityPoint& p = v.points[static_cast<std::size_t>(i)];
+                if (p.normalImpulse == 0 && p.tangentImpulse == 0)
+                    continue;
+                applyContactImpulse(a, b, p.rA, p.rB, p.normalImpulse * v.normal + p.tangentImpulse * t);
+                v.acted = true;
+            }
+        }
+    });
 }
 
-void ContactSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
+void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 {
-    for (ContactConstraint& c : m_constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        const Vec2 n = c.normal;
-        const Vec2 t = tangentOf(n);
-        bool acted = false;
+    forEachGroup([&](std::span<VelocityConstraint> group, int) {
+        for (VelocityConstraint& v : group)
+            solveVelocityConstraint(v, bodies);
+    });
+}
 
-        // Friction first, limited by the normal impulse of the last pass: the normal constraint
-        // is the more important one and so gets the last word.
-        for (int i = 0; i < c.pointCount; ++i) {
-            ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-            const Scalar vt = relativeVelocity(a, b, p.rA, p.rB).dot(t);
-            const Scalar limit = c.friction * p.normalImpulse;
-            const Scalar updated = std::clamp(p.tangentImpulse - vt * p.tangentMass, -limit, limit);
-            const Scalar delta = updated - p.tangentImpulse;
-            p.tangentImpulse = updated;
-            if (delta != 0) {
-                applyImpulse(a, b, p.rA, p.rB, delta * t);
-                acted = true;
+void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
+{
+    std::size_t slot = 0;
+    for (const std::vector<std::uint32_t>& group : m_groups) {
+        for (const std::uint32_t ci : group) {
+            ContactConstraint& c = m_constraints[ci];
+            const VelocityConstraint& v = m_velocityConstraints[slot++];
+            for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                c.points[i].normalImpulse = v.points[i].normalImpulse;
+                c.points[i].tangentImpulse = v.points[i].tangentImpulse;
             }
-        }
-
-        // Normal: vn ≥ −s⁺/h. A speculative point (s > 0) may approach by its gap and no more,
-        // which is what stops a fast body at the surface instead of letting it tunnel; a touching
-        // or overlapping point may not approach at all (overlap is the position solver's job).
-        if (c.pointCount == 2 && c.blockSolve) {
-            ContactConstraintPoint& p1 = c.points[0];
-            ContactConstraintPoint& p2 = c.points[1];
-            const Eigen::Vector2d old(p1.normalImpulse, p2.normalImpulse);
-            Eigen::Vector2d vn(relativeVelocity(a, b, p1.rA, p1.rB).dot(n),
-                               relativeVelocity(a, b, p2.rA, p2.rB).dot(n));
-            vn(0) += std::max(p1.separation, 0.0) / h;
-            vn(1) += std::max(p2.separation, 0.0) / h;
-            // Total impulse x solves the LCP for b = vn − K·old (the velocity without this
-            // constraint's accumulated impulse).
-            const Eigen::Vector2d bias = vn - c.k * old;
-            const Eigen::Vector2d x = solveTwoPointLcp(c.k, bias, 2);
-            const Eigen::Vector2d delta = x - old;
-            p1.normalImpulse = x(0);
-            p2.normalImpulse = x(1);
-            if (delta(0) != 0 || delta(1) != 0) {
-                applyImpulse(a, b, p1.rA, p1.rB, delta(0) * n);
-                applyImpulse(a, b, p2.rA, p2.rB, delta(1) * n);
-                acted = true;
-            }
-        } else {
-            for (int i = 0; i < c.pointCount; ++i) {
-                ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-                const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(n) + std::max(p.separation, 0.0) / h;
-                const Scalar updated = std::max(p.normalImpulse - vn * p.normalMass, 0.0);
-                const Scalar delta = updated - p.normalImpulse;
-                p.normalImpulse = updated;
-                if (delta != 0) {
-                    applyImpulse(a, b, p.rA, p.rB, delta * n);
-                    acted = true;
-                }
-            }
-        }
-        if (acted) {
-            a.hadContactForce = true;
-            b.hadContactForce = true;
+            if (v.acted)
+                markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
         }
     }
 }
 
 bool ContactSolver::solvePositions(std::span<SolverBody> bodies)
 {
-    Scalar deepest = 0;
-    for (const ContactConstraint& c : m_constraints) {
-        SolverBody& a = bodies[c.bodyA];
-        SolverBody& b = bodies[c.bodyB];
-        for (int i = 0; i < c.pointCount; ++i) {
-            const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-            // Current separation of the two surface points along the normal, which turns with A
-            // (A's rotation is taken once for both).
-            const Transform frameA{a.position, std::cos(a.angle), std::sin(a.angle)};
-            const Vec2 n = frameA.rotate(c.localNormalA);
-            const Vec2 pointA = frameA.apply(p.localAnchorA);
-            const Vec2 pointB = b.position + rotate(p.localAnchorB, b.angle);
-            const Scalar separation = (pointB - pointA).dot(n);
-            deepest = std::min(deepest, separation);
-
-            const Scalar correction = std::clamp(constants::kPositionCorrectionFactor *
-                                                     (separation + constants::kLinearSlop),
-                                                 -constants::kMaxPositionCorrection, 0.0);
-            if (correction == 0)
-                continue;
-            const Vec2 mid = 0.5 * (pointA + pointB);
-            const Vec2 rA = mid - a.position;
-            const Vec2 rB = mid - b.position;
-            const Scalar mass = effectiveMass(a, b, rA, rB, n);
-            applyPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
-        }
-    }
+    std::array<Scalar, 3> deepest{};
+    forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
+        for (const std::uint32_t ci : group)
+            deepest[static_cast<std::size_t>(index)] =
+                std::min(deepest[static_cast<std::size_t>(index)], solvePositionConstraint(m_constraints[ci], bodies));
+    });
     // Allow a little more than the slop before calling it solved, as the iterations converge
     // towards −slop from either side.
-    return deepest >= -3 * constants::kLinearSlop;
+    return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
 }
 
-std::vector<model::ContactRecord> ContactSolver::records(const std::vector<bool>& touching) const
+void ContactSolver::partition(std::span<const SolverBody> bodies)
 {
-    std::vector<model::ContactRecord> out;
-    out.reserve(m_constraints.size());
-    for (std::size_t ci = 0; ci < m_constraints.size(); ++ci) {
-        const ContactConstraint& c = m_constraints[ci];
-        model::ContactRecord r;
-        r.bodyA = model::BodyId{c.bodyA};
-        r.pieceA = c.pieceA;
-        r.bodyB = model::BodyId{c.bodyB};
-        r.pieceB = c.pieceB;
-        r.pointCount = static_cast<std::uint8_t>(c.pointCount);
-        for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-            r.featureIds[i] = c.points[i].id;
-            r.normalImpulses[i] = c.points[i].normalImpulse;
-            r.tangentImpulses[i] = c.points[i].tangentImpulse;
-        }
-        r.touching = touching[ci];
-        out.push_back(r);
+    for (std::vector<std::uint32_t>& group : m_groups)
+        group.clear();
+    m_split = m_constraints.size() >= constants::kParallelMinConstraints;
+    if (!m_split) {
+        m_groups[0].resize(m_constraints.size());
+        for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
+            m_groups[0][ci] = ci;
+        return;
     }
-    return out;
+    // Cut the movable bodies into two halves at the median of their positions along the longer
+    // side of their bounding box, ties broken by index so the cut is the same on every machine.
+    // A constraint whose movable bodies all lie in one half belongs to that half; the two halves
+    // share no movable body and can be solved side by side. The few that join the halves follow.
+    Vec2 lower = Vec2::Constant(std::numeric_limits<Scalar>::infinity());
+    Vec2 upper = -lower;
+    m_sortKeys.clear();
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        if (!movable(bodies[i]))
+            continue;
+        lower = lower.cwiseMin(bodies[i].position);
+        upper = upper.cwiseMax(bodies[i].position);
+    }
+    const int axis = (upper - lower).x() >= (upper - lower).y() ? 0 : 1;
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        if (movable(bodies[i]))
+            m_sortKeys.emplace_back(bodies[i].position(axis), i);
+    }
+    m_half.assign(bodies.size(), kFixedHalf);
+    const auto middle = m_sortKeys.begin() + static_cast<std::ptrdiff_t>(m_sortKeys.size() / 2);
+    std::nth_element(m_sortKeys.begin(), middle, m_sortKeys.end());
+    for (auto it = m_sortKeys.begin(); it != m_sortKeys.end(); ++it)
+        m_half[it->second] = it < middle ? 0 : 1;
+    for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
+        const std::uint8_t ha = m_half[m_constraints[ci].bodyA];
+        const std::uint8_t hb = m_half[m_constraints[ci].bodyB];
+        const std::uint8_t half = ha == kFixedHalf ? hb : (hb == kFixedHalf || hb == ha ? ha : 2);
+        m_groups[half == kFixedHalf ? 0 : half].push_back(ci);
+    }
+}
+
+void ContactSolver::runGroups(const std::function<void(int)>& solve)
+{
+    if (m_split && m_tasks) {
+        m_tasks->run(solve);
+    } else {
+        solve(0);
+        solve(1);
+    }
+    solve(2);
+}
+
+void ContactSolver::forEachGroupIndex(const std::function<void(std::span<const std::uint32_t>, int)>& solve)
+{
+    runGroups([&](int g) { solve(m_groups[static_cast<std::size_t>(g)], g); });
+}
+
+void ContactSolver::forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve)
+{
+    runGroups([&](int g) {
+        const auto ug = static_cast<std::size_t>(g);
+        solve(std::span<VelocityConstraint>(m_velocityConstraints).subspan(m_groupStart[ug],
+                                                                           m_groupStart[ug + 1] - m_groupStart[ug]),
+              g);
+    });
 }
 
 } // namespace impetus::controller

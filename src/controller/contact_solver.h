@@ -16,6 +16,7 @@
 #include "controller/collision_types.h"
 #include "controller/force_model.h"
 #include "controller/solver_body.h"
+#include "controller/task_pair.h"
 #include "model/scalar.h"
 #include "model/world.h"
 
@@ -24,6 +25,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -78,6 +81,30 @@ Scalar mixFriction(Scalar a, Scalar b);
 /// time of impact. Poses and velocities are those at the start of the step.
 class ContactSolver {
 public:
+    /// One point of a contact as the velocity passes see it.
+    struct VelocityPoint {
+        Vec2 rA = Vec2::Zero(); ///< m
+        Vec2 rB = Vec2::Zero(); ///< m
+        Scalar normalMass = 0; ///< kg
+        Scalar tangentMass = 0; ///< kg
+        Scalar normalImpulse = 0; ///< accumulated, N·s
+        Scalar tangentImpulse = 0; ///< accumulated, N·s
+        Scalar gapSpeed = 0; ///< max(separation, 0)/h: how fast a speculative point may close, m/s
+    };
+    /// A contact as the velocity passes see it: what ContactConstraint holds for them, packed.
+    struct VelocityConstraint {
+        std::uint32_t bodyA = 0;
+        std::uint32_t bodyB = 0;
+        int pointCount = 0;
+        bool blockSolve = false; ///< two points, solved together
+        bool acted = false; ///< an impulse acted this step
+        Vec2 normal = Vec2::Zero();
+        Scalar friction = 0;
+        Scalar k11 = 0, k12 = 0, k22 = 0; ///< the two-point effective-mass matrix K, 1/kg
+        Scalar inverse11 = 0, inverse12 = 0, inverse22 = 0; ///< K⁻¹, kg
+        std::array<VelocityPoint, 2> points{};
+    };
+
     /// One pair of pieces and its manifold, in broad-phase order.
     struct PairManifold {
         std::uint32_t bodyA = 0;
@@ -96,11 +123,23 @@ public:
     /// number of impacts resolved.
     int solveImpacts(std::span<SolverBody> bodies, Scalar h);
 
-    /// Applies last step's contact-force impulses (warm starting).
-    void warmStart(std::span<SolverBody> bodies);
+    /// Lets the solver run the halves of a split world on `tasks` (owned by the caller, who keeps it
+    /// alive); nullptr runs them one after the other on the calling thread, with the same result.
+    void useTasks(TaskPair* tasks) { m_tasks = tasks; }
+    /// Orders the constraints for solving. A large world (constants::kParallelMinConstraints) is
+    /// cut into two halves that share no movable body, solved side by side on two threads, then
+    /// the constraints that join them; a small one keeps the broad phase's order. The order, and
+    /// so the result, depends only on the world, not on how many threads the machine has.
+    void partition(std::span<const SolverBody> bodies);
+    /// Starts the velocity passes: packs the constraints for them and applies last step's
+    /// contact-force impulses (warm starting).
+    void warmStart(std::span<SolverBody> bodies, Scalar h);
 
     /// One sequential-impulse pass over every contact: friction, then the normal constraints.
-    void solveVelocities(std::span<SolverBody> bodies, Scalar h);
+    void solveVelocities(std::span<SolverBody> bodies);
+    /// Ends the velocity passes: keeps their impulses in constraints() and marks the bodies that a
+    /// contact force acted on.
+    void finishVelocities(std::span<SolverBody> bodies);
 
     /// One non-linear Gauss–Seidel pass on positions. Returns true when every penetration is
     /// within the slop.
@@ -109,12 +148,15 @@ public:
     /// The constraints of this step, with their impulses.
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
 
-    /// The contact records to keep in the world for the next step (warm starting, begin events).
-    /// `touching` must hold one flag per constraint.
-    std::vector<model::ContactRecord> records(const std::vector<bool>& touching) const;
 
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
+    static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
+    /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
+    /// the world is split, then group 2.
+    void runGroups(const std::function<void(int)>& solve);
+    void forEachGroupIndex(const std::function<void(std::span<const std::uint32_t>, int)>& solve);
+    void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
 
     /// A velocity change an impact gave a body at time τ·h within the step; `previous` chains the
     /// same body's earlier entries.
@@ -147,6 +189,14 @@ private:
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
     std::vector<std::uint32_t> m_bodyConstraintFill;
+    /// Constraint indices in solving order: half 0, half 1, then those joining the halves.
+    std::array<std::vector<std::uint32_t>, 3> m_groups;
+    bool m_split = false; ///< groups 0 and 1 run on two threads
+    std::vector<std::uint8_t> m_half; ///< per body: its half, or kFixedHalf
+    std::vector<std::pair<Scalar, std::uint32_t>> m_sortKeys;
+    std::vector<VelocityConstraint> m_velocityConstraints; ///< in solving order
+    std::array<std::size_t, 4> m_groupStart{}; ///< where each group starts in m_velocityConstraints
+    TaskPair* m_tasks = nullptr; ///< the second thread, if any (see useTasks)
 };
 
 } // namespace impetus::controller

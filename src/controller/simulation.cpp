@@ -24,7 +24,9 @@ Simulation::Simulation(SolverSettings settings)
     , m_euler(makeIntegrator(model::IntegratorKind::Euler))
     , m_semiImplicitEuler(makeIntegrator(model::IntegratorKind::SemiImplicitEuler))
     , m_rk4(makeIntegrator(model::IntegratorKind::Rk4))
+    , m_tasks(std::make_unique<TaskPair>())
 {
+    m_contactSolver.useTasks(m_tasks.get());
 }
 
 Integrator& Simulation::integratorFor(model::IntegratorKind kind)
@@ -74,14 +76,30 @@ void Simulation::collide(const model::World& world, Scalar h)
     m_profile.broadMs = millisecondsSince(broadStart);
 
     const Clock::time_point narrowStart = Clock::now();
+    // Each pair's manifold goes to its own slot, so a large world's pairs can be split between
+    // two threads and still come out in the broad phase's order.
+    m_pairManifolds.resize(m_pairs.size());
+    const auto collideRange = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const ProxyPair& pair = m_pairs[k];
+            m_pairManifolds[k] = controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second),
+                                                     m_margins[pieces[pair.first].body] +
+                                                         m_margins[pieces[pair.second].body]);
+        }
+    };
+    if (m_pairs.size() >= constants::kParallelMinPairs) {
+        const std::size_t half = m_pairs.size() / 2;
+        m_tasks->run([&](int part) { part == 0 ? collideRange(0, half) : collideRange(half, m_pairs.size()); });
+    } else {
+        collideRange(0, m_pairs.size());
+    }
     m_manifolds.clear();
-    for (const ProxyPair& pair : m_pairs) {
-        const ColliderPiece& a = pieces[pair.first];
-        const ColliderPiece& b = pieces[pair.second];
-        const Manifold manifold = controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second),
-                                                      m_margins[a.body] + m_margins[b.body]);
-        if (manifold.count > 0)
-            m_manifolds.push_back({a.body, a.piece, b.body, b.piece, manifold});
+    for (std::size_t k = 0; k < m_pairs.size(); ++k) {
+        if (m_pairManifolds[k].count == 0)
+            continue;
+        const ColliderPiece& a = pieces[m_pairs[k].first];
+        const ColliderPiece& b = pieces[m_pairs[k].second];
+        m_manifolds.push_back({a.body, a.piece, b.body, b.piece, m_pairManifolds[k]});
     }
     m_profile.narrowMs = millisecondsSince(narrowStart);
 }
@@ -154,9 +172,13 @@ void Simulation::step(model::World& world)
     // Phase 2: impacts, on the velocities from before this step's forces.
     const Clock::time_point solveStart = Clock::now();
     m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives);
+    m_contactSolver.partition(m_bodies);
     m_jointSolver.prepare(world, m_bodies);
+    m_profile.prepareMs = millisecondsSince(solveStart);
+    const Clock::time_point impactsStart = Clock::now();
     m_profile.impacts = m_contactSolver.solveImpacts(m_bodies, h);
     m_profile.contacts = static_cast<int>(m_contactSolver.constraints().size());
+    m_profile.impactsMs = millisecondsSince(impactsStart);
     double solveMs = millisecondsSince(solveStart);
 
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
@@ -174,11 +196,14 @@ void Simulation::step(model::World& world)
         sb.angularVelocity += world.bodies[i].state.angularVelocity - m_startStates[i].angularVelocity;
     }
     m_jointSolver.warmStart(m_bodies);
-    m_contactSolver.warmStart(m_bodies);
+    m_contactSolver.warmStart(m_bodies, h);
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
         m_jointSolver.solveVelocities(m_bodies, h);
-        m_contactSolver.solveVelocities(m_bodies, h);
+        m_contactSolver.solveVelocities(m_bodies);
     }
+    m_contactSolver.finishVelocities(m_bodies);
+    m_profile.velocityMs = millisecondsSince(velocityStart);
+    const Clock::time_point positionStart = Clock::now();
 
     // Phase 5: positions, then position correction (moves bodies, never touches velocities).
     integratePositions(world, h);
@@ -194,14 +219,19 @@ void Simulation::step(model::World& world)
         world.bodies[i].state.position = m_bodies[i].position;
         world.bodies[i].state.angle = m_bodies[i].angle;
     }
+    m_profile.positionMs = millisecondsSince(positionStart);
     solveMs += millisecondsSince(velocityStart);
     m_profile.solveMs = solveMs;
 
     // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start).
     world.time += h;
     ++world.stepCount;
-    const std::vector<model::ContactRecord> previous = std::move(world.contacts);
-    m_events = updateCollisionState(world, m_contactSolver, m_bodies, previous);
+    const Clock::time_point eventsStart = Clock::now();
+    // The last step's records move aside and their buffer takes this step's: two buffers take
+    // turns, so a large world's records are not allocated afresh every step.
+    m_previousContacts.swap(world.contacts);
+    m_events = updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts);
+    m_profile.eventsMs = millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
     for (model::Joint& joint : world.joints) {
         // Keep a pin's world anchor where the hinge now is, so that saving mid-run writes a scene

@@ -8,6 +8,7 @@
 #include "controller/contact_solver.h"
 #include "controller/integrator.h"
 #include "controller/joint_solver.h"
+#include "controller/task_pair.h"
 #include "model/constants.h"
 #include "model/world.h"
 
@@ -23,6 +24,12 @@ struct StepProfile {
     double narrowMs = 0; ///< contact manifolds of the candidate pairs
     double integrateMs = 0; ///< smooth forces and their integration
     double solveMs = 0; ///< impacts, contact and joint velocities, position correction
+    // The parts of solveMs:
+    double prepareMs = 0; ///< contact and joint constraints built, warm-start impulses matched
+    double impactsMs = 0; ///< the impact pass
+    double velocityMs = 0; ///< warm start and the velocity passes
+    double positionMs = 0; ///< positions and the position passes
+    double eventsMs = 0; ///< colliding flags, contact-begin events, contact records (not in solveMs)
     double totalMs = 0; ///< the whole step
     int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
     int impacts = 0; ///< impacts resolved
@@ -57,9 +64,13 @@ private:
     void integratePositions(model::World& world, Scalar h);
 
     SolverSettings m_settings;
+    std::vector<Manifold> m_pairManifolds; ///< one per broad-phase pair, filled by both threads
     std::unique_ptr<Integrator> m_euler;
     std::unique_ptr<Integrator> m_semiImplicitEuler;
     std::unique_ptr<Integrator> m_rk4;
+    /// The second thread, shared by the narrow phase and the contact solver. Behind a pointer so
+    /// that the contact solver's reference to it survives moving the Simulation.
+    std::unique_ptr<TaskPair> m_tasks;
     StepProfile m_profile;
 
     // Scratch, reused from step to step.
@@ -75,6 +86,7 @@ private:
     ContactSolver m_contactSolver;
     JointSolver m_jointSolver;
     std::vector<CollisionEvent> m_events;
+    std::vector<model::ContactRecord> m_previousContacts;
 };
 
 } // namespace impetus::controller

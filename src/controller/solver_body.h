@@ -7,8 +7,9 @@
 namespace impetus::controller {
 
 /// A body as the constraint solvers see it: velocity, pose and inverse mass properties. Fixed
-/// bodies have zero inverse mass and zero velocity.
-struct SolverBody {
+/// bodies have zero inverse mass and zero velocity. The fields the solvers read most come first and
+/// fill one cache line.
+struct alignas(64) SolverBody {
     Vec2 velocity = Vec2::Zero(); ///< m/s
     Scalar angularVelocity = 0; ///< rad/s
     Vec2 position = Vec2::Zero(); ///< centre of mass, m (moved by position correction)

@@ -3,6 +3,7 @@
 /// Every tuning constant of the engine, with its unit and the reason for its value.
 
 #include "model/scalar.h"
+#include <cstddef>
 
 namespace impetus::constants {
 
@@ -69,6 +70,20 @@ inline constexpr int kPositionIterations = 3;
 /// bodies in mutual contact (Newton's cradle, a struck stack) ends in bounded time; what is left
 /// is handled by the regular velocity iterations.
 inline constexpr int kMaxImpactsPerPoint = 8;
+
+/// A step with at least this many contact constraints is solved in two halves side by side (two
+/// threads; docs/physics.md, "Two threads"). Below it, handing work to a second thread costs more
+/// than it saves. Whether a step is split depends only on the world, never on the machine, so the
+/// result is the same bits everywhere.
+inline constexpr std::size_t kParallelMinConstraints = 512;
+
+/// A step with at least this many broad-phase pairs finds their contacts on two threads, each
+/// taking half of the pairs in order (same results, in the same order).
+inline constexpr std::size_t kParallelMinPairs = 1024;
+
+/// How many times a thread checks for new work before it sleeps: about 10–20 µs, longer than the
+/// gap between two solver passes and shorter than an operating-system time slice.
+inline constexpr int kTaskSpinCount = 20000;
 
 // ---- Broad phase (controller/broad_phase) -----------------------------------------------------
 
