@@ -158,7 +158,8 @@ def projectile():
         # A backstop past the landing point: it stops the rolling ball, and its height makes the
         # canvas frame the whole flight, apex included.
         fixed("backstop", box(0.3, 2.6), (9.25, 1.3), STRUCTURE_COLOR),
-        body("ball", circle(r), (x0, r), "#3b82f6",
+        # 1 mm above the launcher, so that the launch is not counted as a collision.
+        body("ball", circle(r), (x0, r + 0.001), "#3b82f6",
              velocity=vec(v * math.cos(theta), v * math.sin(theta)),
              restitution=0.5, friction=0.4),
     ]
