@@ -129,6 +129,8 @@ def incline():
     ramp = [(0, 0), (run, 0), (0, rise)]  # the slope runs down to the right
     bodies = [
         fixed("floor", box(14, 0.5), (3.5, -0.25)),
+        # The block leaves the ramp at about 6.7 m/s: a buffer stops it before the floor's end.
+        fixed("buffer", box(0.3, 1.0), (10.35, 0.5), STRUCTURE_COLOR, restitution=0),
         fixed("incline", polygon(ramp), centroid(ramp), STRUCTURE_COLOR,
               restitution=0, friction=mu),
     ]
