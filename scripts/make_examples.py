@@ -24,8 +24,9 @@ STEP = 1.0 / 240.0
 GROUND_COLOR = "#a8a29e"
 STRUCTURE_COLOR = "#78716c"
 
-# A palette of distinct colours that read well on the canvas's off-white background.
-PALETTE = ["#3b82f6", "#f59e0b", "#10b981", "#ef4444", "#8b5cf6", "#ec4899", "#14b8a6",
+# A palette of distinct colours that read well on the canvas's off-white background. No reds:
+# red is what a colliding body turns (the contract), so a red body would look like a collision.
+PALETTE = ["#3b82f6", "#f59e0b", "#10b981", "#d946ef", "#8b5cf6", "#ec4899", "#14b8a6",
            "#f97316", "#6366f1", "#84cc16", "#06b6d4", "#eab308", "#a855f7", "#22c55e", "#0ea5e9"]
 
 
@@ -220,7 +221,7 @@ def spring_chain():
     # The lone oscillator, pulled 0.4 m below its equilibrium and released.
     x = -1.5
     eq = -(rest + m * G / k) - h / 2
-    bodies.append(body("weight", box(w, h), (x, eq - 0.4), "#ef4444", mass=m))
+    bodies.append(body("weight", box(w, h), (x, eq - 0.4), "#f59e0b", mass=m))
     springs.append({"bodyA": "weight", "anchorA": vec(0, h / 2), "bodyB": None,
                     "anchorB": vec(x, 0), "stiffness": num(k), "damping": 0, "restLength": rest})
     # The chain, every spring at its rest length.
@@ -298,8 +299,8 @@ def billiards():
         ("cushion-right", box(rail, width), ((length + rail) / 2, 0)),
     ]
     bodies = [fixed(n, s, p, "#166534", restitution=0.8, friction=0.2) for n, s, p in cushions]
-    balls = ["#facc15", "#2563eb", "#dc2626", "#7c3aed", "#f97316", "#16a34a", "#9f1239",
-             "#111827", "#eab308", "#3b82f6", "#ef4444", "#8b5cf6", "#fb923c", "#22c55e", "#be123c"]
+    balls = ["#facc15", "#2563eb", "#0d9488", "#7c3aed", "#f97316", "#16a34a", "#854d0e",
+             "#111827", "#eab308", "#3b82f6", "#a3e635", "#8b5cf6", "#fb923c", "#22c55e", "#db2777"]
     apex_x = length / 4  # the foot spot
     d = 2 * r + gap
     k = 0
@@ -335,7 +336,7 @@ def spaceship_asteroids():
     bodies = [body("spaceship", polygon(ship), (-7.0, 0.0), "#0ea5e9", velocity=[3.5, 0],
                    density=2.0, restitution=0.5, friction=0.3)]
     rocks = ["#a16207", "#92400e", "#78716c", "#b45309", "#57534e", "#a8a29e", "#854d0e",
-             "#6b7280", "#9a3412", "#737373"]
+             "#6b7280", "#a8a29e", "#737373"]
     placed = [((-7.0, 0.0), 1.3)]
     # A few asteroids are put on the ship's path so that a run always has hits; the rest are
     # scattered over the field.
