@@ -1,6 +1,7 @@
 // Pin and rod joints against pendulum theory.
 
 #include "controller/simulation.h"
+#include "support/pendulum_theory.h"
 #include "support/world_builders.h"
 
 #include <gtest/gtest.h>
@@ -19,20 +20,6 @@ using testing::makeEmptyWorld;
 
 constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
 constexpr Scalar kG = 9.81;
-
-/// Complete elliptic integral of the first kind K(k) by the arithmetic–geometric mean:
-/// K(k) = π / (2·AGM(1, √(1 − k²))).
-Scalar ellipticK(Scalar k)
-{
-    Scalar a = 1;
-    Scalar b = std::sqrt(1 - k * k);
-    for (int i = 0; i < 30; ++i) {
-        const Scalar next = (a + b) / 2;
-        b = std::sqrt(a * b);
-        a = next;
-    }
-    return kPi / (2 * a);
-}
 
 /// Mean period of the x coordinate of body `index` from its upward zero crossings (linearly
 /// interpolated between steps), over `duration` seconds.
@@ -77,7 +64,7 @@ TEST(Pendulum, RodPendulumHasTheLargeAmplitudePeriod)
 
     std::vector<Scalar> distances;
     const Scalar period = measurePeriod(world, 0, 12.0, 0.0, &distances);
-    const Scalar expected = 4 * std::sqrt(length / kG) * ellipticK(std::sin(theta0 / 2));
+    const Scalar expected = testing::pendulumPeriod(length, kG, theta0);
     EXPECT_NEAR(period, expected, 1e-3 * expected);
     for (const Scalar d : distances)
         ASSERT_NEAR(d, length, 1e-3);
