@@ -237,15 +237,42 @@ Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
 void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
                             std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives)
 {
-    m_constraints.clear();
-    m_constraints.reserve(manifolds.size());
+    // Each manifold fills its own slot, so a large world's manifolds can be split between two
+    // threads; empty ones are dropped afterwards, keeping the order.
+    m_constraints.resize(manifolds.size());
     const std::vector<model::ContactRecord>& previous = world.contacts;
-    std::size_t cursor = 0;
+    const auto build = [&](std::size_t begin, std::size_t end) {
+        if (begin < end)
+            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end);
+    };
+    if (m_tasks && manifolds.size() >= constants::kParallelMinConstraints) {
+        const std::size_t half = manifolds.size() / 2;
+        m_tasks->run([&](int part) { part == 0 ? build(0, half) : build(half, manifolds.size()); });
+    } else {
+        build(0, manifolds.size());
+    }
+    std::erase_if(m_constraints, [](const ContactConstraint& c) { return c.pointCount == 0; });
+}
 
-    for (const PairManifold& pm : manifolds) {
+void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
+                                     std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                                     const std::vector<model::ContactRecord>& previous, std::size_t begin,
+                                     std::size_t end)
+{
+    // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
+    // range starts.
+    const PairManifold& first = manifolds[begin];
+    const PairKey firstKey{first.bodyA, first.pieceA, first.bodyB, first.pieceB};
+    std::size_t cursor = static_cast<std::size_t>(
+        std::lower_bound(previous.begin(), previous.end(), firstKey,
+                         [](const model::ContactRecord& r, const PairKey& key) { return keyOf(r) < key; }) -
+        previous.begin());
+    for (std::size_t k = begin; k < end; ++k) {
+        const PairManifold& pm = manifolds[k];
+        ContactConstraint& c = m_constraints[k];
+        c = ContactConstraint{};
         if (pm.manifold.count == 0)
             continue;
-        ContactConstraint c;
         c.bodyA = pm.bodyA;
         c.pieceA = pm.pieceA;
         c.bodyB = pm.bodyB;
@@ -260,7 +287,6 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
         const SolverBody& b = bodies[c.bodyB];
         c.localNormalA = rotate(c.normal, -a.angle);
 
-        // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together.
         const PairKey want{c.bodyA, c.pieceA, c.bodyB, c.pieceB};
         while (cursor < previous.size() && keyOf(previous[cursor]) < want)
             ++cursor;
@@ -330,7 +356,6 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
             const ContactConstraintPoint& p1 = c.points[0];
             c.k(0, 0) = p1.normalMass > 0 ? 1 / p1.normalMass : 0;
         }
-        m_constraints.push_back(c);
     }
 }
 

@@ -152,6 +152,10 @@ public:
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
     static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
+    /// prepare() for manifolds [begin, end), into the same slots of m_constraints.
+    void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
+                          std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                          const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
