@@ -24,7 +24,7 @@ Simulation::Simulation(SolverSettings settings)
     , m_euler(makeIntegrator(model::IntegratorKind::Euler))
     , m_semiImplicitEuler(makeIntegrator(model::IntegratorKind::SemiImplicitEuler))
     , m_rk4(makeIntegrator(model::IntegratorKind::Rk4))
-    , m_tasks(std::make_unique<TaskPair>())
+    , m_tasks(settings.secondThread ? std::make_unique<TaskPair>() : nullptr)
 {
     m_contactSolver.useTasks(m_tasks.get());
 }
@@ -87,7 +87,7 @@ void Simulation::collide(const model::World& world, Scalar h)
                                                          m_margins[pieces[pair.second].body]);
         }
     };
-    if (m_pairs.size() >= constants::kParallelMinPairs) {
+    if (m_tasks && m_pairs.size() >= constants::kParallelMinPairs) {
         const std::size_t half = m_pairs.size() / 2;
         m_tasks->run([&](int part) { part == 0 ? collideRange(0, half) : collideRange(half, m_pairs.size()); });
     } else {

@@ -39,6 +39,9 @@ struct StepProfile {
 struct SolverSettings {
     int velocityIterations = constants::kVelocityIterations; ///< sequential-impulse passes, 8
     int positionIterations = constants::kPositionIterations; ///< position-correction passes (at most), 3
+    /// Use a second thread for large worlds (docs/physics.md, "Two threads"). The result is the
+    /// same bits either way; false saves the thread.
+    bool secondThread = true;
 };
 
 /// Steps a world with its fixed time step. Holds only scratch state (buffers, the broad phase's

@@ -77,5 +77,25 @@ TEST(Determinism, GoldenHashOfAPyramid)
     EXPECT_EQ(hashPoses(world), 0x0c694ae922c3aafbull) << std::hex << "hash is 0x" << hashPoses(world);
 }
 
+// A world large enough to be solved in two halves (base 40: 820 boxes, about 2400 contacts, over
+// constants::kParallelMinConstraints and kParallelMinPairs) gives the same bits with the second
+// thread as without it: the halves share no movable body, and the order is the world's, not the
+// machine's.
+TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
+{
+    model::World twoThreads = model::makePyramid(40);
+    model::World oneThread = twoThreads;
+    Simulation withThread;
+    SolverSettings single;
+    single.secondThread = false;
+    Simulation withoutThread(single);
+    for (int i = 0; i < 120; ++i) {
+        withThread.step(twoThreads);
+        withoutThread.step(oneThread);
+    }
+    ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
+    EXPECT_EQ(twoThreads, oneThread);
+}
+
 } // namespace
 } // namespace impetus::controller
