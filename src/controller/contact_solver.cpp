@@ -196,21 +196,24 @@ void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<Sol
     c.acted = c.acted || acted;
 }
 
-/// One non-linear Gauss–Seidel update of one constraint's positions. Returns the deepest
-/// separation it saw (≤ 0), m.
-Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies)
+/// One non-linear Gauss–Seidel update of one constraint's positions. `rotations` holds every
+/// body's cos and sin of its current angle, kept up to date here when a body turns. Returns the
+/// deepest separation it saw (≤ 0), m.
+Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies, std::span<Vec2> rotations)
 {
     Scalar deepest = 0;
     SolverBody& a = bodies[c.bodyA];
     SolverBody& b = bodies[c.bodyB];
     for (int i = 0; i < c.pointCount; ++i) {
         const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-        // Current separation of the two surface points along the normal, which turns with A (A's
-        // rotation is taken once for both).
-        const Transform frameA{a.position, std::cos(a.angle), std::sin(a.angle)};
+        // Current separation of the two surface points along the normal, which turns with A.
+        const Vec2& rotationA = rotations[c.bodyA];
+        const Vec2& rotationB = rotations[c.bodyB];
+        const Transform frameA{a.position, rotationA.x(), rotationA.y()};
+        const Transform frameB{b.position, rotationB.x(), rotationB.y()};
         const Vec2 n = frameA.rotate(c.localNormalA);
         const Vec2 pointA = frameA.apply(p.localAnchorA);
-        const Vec2 pointB = b.position + rotate(p.localAnchorB, b.angle);
+        const Vec2 pointB = frameB.apply(p.localAnchorB);
         const Scalar separation = (pointB - pointA).dot(n);
         deepest = std::min(deepest, separation);
 
@@ -224,6 +227,12 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
         const Vec2 rB = mid - b.position;
         const Scalar mass = effectiveMass(a, b, rA, rB, n);
         applyContactPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
+        // A resting point within the slop moves nothing: the sine and cosine are computed again
+        // only for a body that turned, not at every look.
+        if (movable(a))
+            rotations[c.bodyA] = Vec2(std::cos(a.angle), std::sin(a.angle));
+        if (movable(b))
+            rotations[c.bodyB] = Vec2(std::cos(b.angle), std::sin(b.angle));
     }
     return deepest;
 }
@@ -678,11 +687,15 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 
 bool ContactSolver::solvePositions(std::span<SolverBody> bodies)
 {
+    // The joints may have turned bodies since the last pass.
+    m_rotations.resize(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
     std::array<Scalar, 3> deepest{};
     forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
         for (const std::uint32_t ci : group)
             deepest[static_cast<std::size_t>(index)] =
-                std::min(deepest[static_cast<std::size_t>(index)], solvePositionConstraint(m_constraints[ci], bodies));
+                std::min(deepest[static_cast<std::size_t>(index)], solvePositionConstraint(m_constraints[ci], bodies, m_rotations));
     });
     // Allow a little more than the slop before calling it solved, as the iterations converge
     // towards −slop from either side.

@@ -199,6 +199,7 @@ private:
     std::vector<std::uint8_t> m_half; ///< per body: its half, or kFixedHalf
     std::vector<std::pair<Scalar, std::uint32_t>> m_sortKeys;
     std::vector<VelocityConstraint> m_velocityConstraints; ///< in solving order
+    std::vector<Vec2> m_rotations; ///< per body: (cos, sin) of its angle, in the position passes
     std::array<std::size_t, 4> m_groupStart{}; ///< where each group starts in m_velocityConstraints
     TaskPair* m_tasks = nullptr; ///< the second thread, if any (see useTasks)
 };
