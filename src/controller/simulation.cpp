@@ -234,9 +234,9 @@ void Simulation::step(model::World& world)
     m_profile.eventsMs = millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
     for (model::Joint& joint : world.joints) {
-        // Keep a pin's world anchor where the hinge now is, so that saving mid-run writes a scene
-        // that loads to this state.
-        if (joint.type == model::JointType::Pin)
+        // Keep a pin between two bodies at the hinge's current place, so that saving mid-run writes
+        // a scene that loads to this state. A pin to the world keeps its fixed pivot.
+        if (joint.type == model::JointType::Pin && joint.bodyB)
             joint.worldAnchor = world.body(joint.bodyA).worldPoint(joint.anchorA);
     }
 
