@@ -17,11 +17,11 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -48,6 +48,52 @@ constexpr int kSwatchSizePx = 14;
 /// Vertex rows the table shows before it scrolls: a quadrilateral and a bit, without letting a
 /// 50-vertex polygon push the rest of the pane out of sight.
 constexpr int kVisibleVertexRows = 6;
+
+/// An edit that copies `current` (a member of the pane, read when the edit is applied), changes
+/// the copy with `set` and hands it to `commit`, which checks it, emits and may refuse it.
+template <class T, class Commit>
+std::function<std::optional<QString>(double)> editCopy(const T& current, std::function<void(T&, double)> set,
+                                                       Commit commit)
+{
+    return [&current, set = std::move(set), commit = std::move(commit)](double value) {
+        T copy = current;
+        set(copy, value);
+        return commit(std::move(copy));
+    };
+}
+
+/// `widget` with its object name (for tests and style sheets) and accessible name set.
+template <class W>
+W* named(W* widget, const char* objectName, const QString& accessibleName)
+{
+    widget->setObjectName(QString::fromLatin1(objectName));
+    widget->setAccessibleName(accessibleName);
+    return widget;
+}
+
+/// Adds the row `label` · `field` to `form`; the label's buddy is `buddy`, the widget that takes
+/// the focus (field itself, or the first edit in it).
+void addLabelledRow(QFormLayout* form, const QString& label, QWidget* field, QWidget* buddy)
+{
+    auto* rowLabel = new QLabel(label);
+    rowLabel->setBuddy(buddy);
+    form->addRow(rowLabel, field);
+}
+
+/// A row widget: `widgets` side by side, the line edits stretching, then `unit`.
+QWidget* rowWith(std::initializer_list<QWidget*> widgets, const QString& unit)
+{
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* widget : widgets)
+        layout->addWidget(widget, qobject_cast<QLineEdit*>(widget) ? 1 : 0);
+    layout->addWidget(new QLabel(unit));
+    return row;
+}
+
+/// Characters a combo box is sized for; longer entries are elided in the closed box.
+constexpr int kComboMinimumCharacters = 12;
 
 /// The text that asks for SoftSettings::autoDensity, as in the scene format.
 constexpr char kAutoText[] = "auto";
@@ -123,7 +169,9 @@ PropertyPane::PropertyPane(QWidget* parent)
     m_message->hide();
     layout->addWidget(m_message);
 
-    m_pages = new QStackedWidget;
+    m_pages = new QWidget;
+    auto* pagesLayout = new QVBoxLayout(m_pages);
+    pagesLayout->setContentsMargins(0, 0, 0, 0);
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -157,9 +205,16 @@ QFormLayout* PropertyPane::addPage(Page page, const QString& accessibleName)
 {
     auto* widget = new QWidget;
     widget->setAccessibleName(accessibleName);
-    auto* form = new QFormLayout(widget);
+    auto* column = new QVBoxLayout(widget);
+    auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_pages->addWidget(widget);
+    // In a narrow dock a long label goes above its field instead of pushing the units out of view.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    column->addLayout(form);
+    // The rows keep their natural height at the top; the free space stays below them.
+    column->addStretch(1);
+    m_pages->layout()->addWidget(widget);
+    m_pageWidgets.push_back(widget);
     m_forms.push_back(form);
     Q_ASSERT(m_forms.size() == static_cast<std::size_t>(page) + 1);
     return form;
@@ -192,14 +247,8 @@ PropertyPane::NumberField& PropertyPane::addNumber(Page page, QFormLayout* form,
                                                   std::function<double()> read, Apply apply)
 {
     NumberField& field = makeNumber(page, objectName, label, unit, bound, std::move(read), std::move(apply));
-    field.row = new QWidget;
-    auto* row = new QHBoxLayout(field.row);
-    row->setContentsMargins(0, 0, 0, 0);
-    row->addWidget(field.edit, 1);
-    row->addWidget(new QLabel(unit));
-    auto* rowLabel = new QLabel(label);
-    rowLabel->setBuddy(field.edit);
-    form->addRow(rowLabel, field.row);
+    field.row = rowWith({field.edit}, unit);
+    addLabelledRow(form, label, field.row, field.edit);
     return field;
 }
 
@@ -207,28 +256,22 @@ QWidget* PropertyPane::addVector(Page page, QFormLayout* form, const QString& ob
                                  const QString& unit, std::function<Vec2()> read,
                                  const std::function<Apply(int axis)>& apply)
 {
-    auto* container = new QWidget;
-    auto* row = new QHBoxLayout(container);
-    row->setContentsMargins(0, 0, 0, 0);
     const QString axisNames[2] = {QStringLiteral("x"), QStringLiteral("y")};
-    QLineEdit* first = nullptr;
+    NumberField* fields[2] = {};
+    QLabel* axisLabels[2] = {};
     for (int axis = 0; axis < 2; ++axis) {
         NumberField& field =
             makeNumber(page, objectName + axisNames[axis].toUpper(), tr("%1 %2").arg(label, axisNames[axis]), unit,
                        Bound::Any, [read, axis] { return read()[axis]; }, apply ? apply(axis) : Apply{});
-        field.row = container;
-        auto* axisLabel = new QLabel(axisNames[axis]);
-        axisLabel->setBuddy(field.edit);
-        row->addWidget(axisLabel);
-        row->addWidget(field.edit, 1);
-        if (!first)
-            first = field.edit;
+        fields[axis] = &field;
+        axisLabels[axis] = new QLabel(axisNames[axis]);
+        axisLabels[axis]->setBuddy(field.edit);
     }
-    row->addWidget(new QLabel(unit));
-    auto* rowLabel = new QLabel(label);
-    rowLabel->setBuddy(first);
-    form->addRow(rowLabel, container);
-    return container;
+    QWidget* row = rowWith({axisLabels[0], fields[0]->edit, axisLabels[1], fields[1]->edit}, unit);
+    fields[0]->row = row;
+    fields[1]->row = row;
+    addLabelledRow(form, label, row, fields[0]->edit);
+    return row;
 }
 
 QLineEdit* PropertyPane::addText(QFormLayout* form, const QString& objectName, const QString& label)
@@ -236,9 +279,7 @@ QLineEdit* PropertyPane::addText(QFormLayout* form, const QString& objectName, c
     auto* edit = new QLineEdit;
     edit->setObjectName(objectName);
     edit->setAccessibleName(label);
-    auto* rowLabel = new QLabel(label);
-    rowLabel->setBuddy(edit);
-    form->addRow(rowLabel, edit);
+    addLabelledRow(form, label, edit, edit);
     return edit;
 }
 
@@ -252,16 +293,15 @@ void PropertyPane::buildWorldPage()
                                    tr("Change gravity"));
               });
 
-    m_integrator = new QComboBox;
-    m_integrator->setObjectName(QStringLiteral("integrator"));
-    m_integrator->setAccessibleName(tr("Integrator"));
+    m_integrator = named(new QComboBox, "integrator", tr("Integrator"));
     m_integrator->addItem(tr("Explicit Euler (euler)"), static_cast<int>(model::IntegratorKind::Euler));
     m_integrator->addItem(tr("Semi-implicit Euler (semi-implicit-euler)"),
                           static_cast<int>(model::IntegratorKind::SemiImplicitEuler));
     m_integrator->addItem(tr("Runge–Kutta 4 (rk4)"), static_cast<int>(model::IntegratorKind::Rk4));
-    auto* integratorLabel = new QLabel(tr("Integrator"));
-    integratorLabel->setBuddy(m_integrator);
-    form->addRow(integratorLabel, m_integrator);
+    // The longest name would make the narrow dock scroll sideways; the open list shows it whole.
+    m_integrator->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_integrator->setMinimumContentsLength(kComboMinimumCharacters);
+    addLabelledRow(form, tr("Integrator"), m_integrator, m_integrator);
     connect(m_integrator, &QComboBox::activated, this, &PropertyPane::onIntegratorActivated);
 
     addNumber(Page::World, form, QStringLiteral("timeStep"), tr("Time step"), tr("s"), Bound::Positive,
@@ -305,27 +345,22 @@ void PropertyPane::buildBodyPage()
     m_vertices->setSelectionMode(QAbstractItemView::SingleSelection);
     // Tab leaves the table for the next field; the arrow keys move between cells.
     m_vertices->setTabKeyNavigation(false);
-    m_vertices->setMinimumHeight(m_vertices->horizontalHeader()->sizeHint().height() +
-                                 kVisibleVertexRows * m_vertices->verticalHeader()->defaultSectionSize());
+    m_vertices->setFixedHeight(m_vertices->horizontalHeader()->sizeHint().height() +
+                               kVisibleVertexRows * m_vertices->verticalHeader()->defaultSectionSize() +
+                               2 * m_vertices->frameWidth());
     connect(m_vertices, &QTableWidget::itemChanged, this, &PropertyPane::onVertexEdited);
     verticesLayout->addWidget(m_vertices);
     auto* buttons = new QHBoxLayout;
-    m_addVertex = new QPushButton(tr("Add vertex"));
-    m_addVertex->setObjectName(QStringLiteral("addVertex"));
-    m_addVertex->setAccessibleName(tr("Add vertex"));
+    m_addVertex = named(new QPushButton(tr("Add vertex")), "addVertex", tr("Add vertex"));
     m_addVertex->setToolTip(tr("Insert a vertex halfway along the edge after the current vertex"));
-    m_removeVertex = new QPushButton(tr("Remove vertex"));
-    m_removeVertex->setObjectName(QStringLiteral("removeVertex"));
-    m_removeVertex->setAccessibleName(tr("Remove vertex"));
+    m_removeVertex = named(new QPushButton(tr("Remove vertex")), "removeVertex", tr("Remove vertex"));
     m_removeVertex->setToolTip(tr("Remove the current vertex"));
     connect(m_addVertex, &QPushButton::clicked, this, &PropertyPane::addVertex);
     connect(m_removeVertex, &QPushButton::clicked, this, &PropertyPane::removeVertex);
     buttons->addWidget(m_addVertex);
     buttons->addWidget(m_removeVertex);
     verticesLayout->addLayout(buttons);
-    auto* verticesLabel = new QLabel(tr("Vertices"));
-    verticesLabel->setBuddy(m_vertices);
-    form->addRow(verticesLabel, m_verticesRow);
+    addLabelledRow(form, tr("Vertices"), m_verticesRow, m_vertices);
 
     addVector(Page::Body, form, QStringLiteral("position"), tr("Position"), tr("m"),
               [this] { return m_body.state.position; },
@@ -349,16 +384,12 @@ void PropertyPane::buildBodyPage()
         editBody([](model::Body& b, double v) { b.state.angularVelocity = v; }, tr("Change angular velocity")));
     spin.displayScale = kDegreesPerRadian;
 
-    m_massMode = new QComboBox;
-    m_massMode->setObjectName(QStringLiteral("massMode"));
-    m_massMode->setAccessibleName(tr("Mass given as"));
+    m_massMode = named(new QComboBox, "massMode", tr("Mass given as"));
     m_massMode->setAccessibleDescription(tr("Choose whether you give the density or the mass; the other follows "
                                             "from the area"));
     m_massMode->addItem(tr("Density"), static_cast<int>(model::MassMode::Density));
     m_massMode->addItem(tr("Mass"), static_cast<int>(model::MassMode::Mass));
-    auto* massModeLabel = new QLabel(tr("Mass given as"));
-    massModeLabel->setBuddy(m_massMode);
-    form->addRow(massModeLabel, m_massMode);
+    addLabelledRow(form, tr("Mass given as"), m_massMode, m_massMode);
     connect(m_massMode, &QComboBox::activated, this, &PropertyPane::onMassModeActivated);
     m_density = &addNumber(Page::Body, form, QStringLiteral("density"), tr("Density"), tr("kg/m²"), Bound::Positive,
                            [this] { return m_body.density(); },
@@ -378,45 +409,28 @@ void PropertyPane::buildBodyPage()
     addNumber(Page::Body, form, QStringLiteral("restitution"), tr("Restitution"), tr("(0–1)"), Bound::UnitInterval,
               [this] { return m_body.material.restitution; },
               editBody([](model::Body& b, double v) { b.material.restitution = v; }, tr("Change restitution")));
-    addNumber(Page::Body, form, QStringLiteral("friction"), tr("Friction"), tr("μ"), Bound::NonNegative,
+    addNumber(Page::Body, form, QStringLiteral("friction"), tr("Friction"), tr("(≥ 0)"), Bound::NonNegative,
               [this] { return m_body.material.friction; },
               editBody([](model::Body& b, double v) { b.material.friction = v; }, tr("Change friction")));
 
-    m_fixed = new QCheckBox(tr("Fixed"));
-    m_fixed->setObjectName(QStringLiteral("fixed"));
-    m_fixed->setAccessibleName(tr("Fixed"));
+    m_fixed = named(new QCheckBox(tr("Fixed")), "fixed", tr("Fixed"));
     m_fixed->setToolTip(tr("A fixed body has infinite mass: it moves only with the velocity it is given"));
     form->addRow(QString(), m_fixed);
     connect(m_fixed, &QCheckBox::clicked, this, &PropertyPane::onFixedClicked);
 
-    m_color = new QPushButton;
-    m_color->setObjectName(QStringLiteral("color"));
-    m_color->setAccessibleName(tr("Colour"));
-    auto* colorLabel = new QLabel(tr("Colour"));
-    colorLabel->setBuddy(m_color);
-    form->addRow(colorLabel, m_color);
+    m_color = named(new QPushButton, "color", tr("Colour"));
+    addLabelledRow(form, tr("Colour"), m_color, m_color);
     connect(m_color, &QPushButton::clicked, this, &PropertyPane::chooseColor);
 
-    m_soft = new QCheckBox(tr("Soft body"));
-    m_soft->setObjectName(QStringLiteral("soft"));
-    m_soft->setAccessibleName(tr("Soft body"));
+    m_soft = named(new QCheckBox(tr("Soft body")), "soft", tr("Soft body"));
     m_soft->setToolTip(tr("Simulate the body as a grid of small ellipses joined by springs"));
     form->addRow(QString(), m_soft);
     connect(m_soft, &QCheckBox::clicked, this, &PropertyPane::onSoftClicked);
 
-    m_softDensity = new QLineEdit;
-    m_softDensity->setObjectName(QStringLiteral("softDensity"));
-    m_softDensity->setAccessibleName(tr("Ellipses per square metre"));
+    m_softDensity = named(new QLineEdit, "softDensity", tr("Ellipses per square metre"));
     m_softDensity->setAccessibleDescription(tr("A number greater than 0, or “auto”"));
     m_softDensity->setPlaceholderText(tr("a number or “auto”"));
-    auto* softDensityRow = new QWidget;
-    auto* softDensityLayout = new QHBoxLayout(softDensityRow);
-    softDensityLayout->setContentsMargins(0, 0, 0, 0);
-    softDensityLayout->addWidget(m_softDensity, 1);
-    softDensityLayout->addWidget(new QLabel(tr("1/m²")));
-    auto* softDensityLabel = new QLabel(tr("Ellipses per m²"));
-    softDensityLabel->setBuddy(m_softDensity);
-    form->addRow(softDensityLabel, softDensityRow);
+    addLabelledRow(form, tr("Ellipses per m²"), rowWith({m_softDensity}, tr("1/m²")), m_softDensity);
     connect(m_softDensity, &QLineEdit::editingFinished, this, &PropertyPane::onSoftDensityEdited);
 
     // Soft fields are only enabled while the body is soft, so m_body.soft is present when they apply.
@@ -503,48 +517,35 @@ void PropertyPane::buildJointPage()
 
 PropertyPane::Apply PropertyPane::editBody(std::function<void(model::Body&, double)> set, const QString& actionName)
 {
-    return [this, set = std::move(set), actionName](double value) {
-        model::Body body = m_body;
-        set(body, value);
-        return commitBody(std::move(body), actionName);
-    };
+    return editCopy(m_body, std::move(set),
+                    [this, actionName](model::Body body) { return commitBody(std::move(body), actionName); });
 }
 
 PropertyPane::Apply PropertyPane::editSpring(std::function<void(model::Spring&, double)> set,
                                              const QString& actionName)
 {
-    return [this, set = std::move(set), actionName](double value) -> std::optional<QString> {
-        model::Spring spring = m_spring;
-        set(spring, value);
+    return editCopy(m_spring, std::move(set), [this, actionName](const model::Spring& spring) {
         if (spring != m_spring) {
             m_spring = spring;
             emit springEdited(m_index, m_spring, actionName);
         }
-        return std::nullopt;
-    };
+        return std::optional<QString>();
+    });
 }
 
 PropertyPane::Apply PropertyPane::editJoint(std::function<void(model::Joint&, double)> set, const QString& actionName)
 {
-    return [this, set = std::move(set), actionName](double value) {
-        model::Joint joint = m_joint;
-        set(joint, value);
-        return commitJoint(std::move(joint), actionName);
-    };
+    return editCopy(m_joint, std::move(set),
+                    [this, actionName](model::Joint joint) { return commitJoint(std::move(joint), actionName); });
 }
 
 PropertyPane::Apply PropertyPane::editWorld(std::function<void(model::WorldSettings&, double)> set,
                                             const QString& actionName)
 {
-    return [this, set = std::move(set), actionName](double value) -> std::optional<QString> {
-        model::WorldSettings settings = m_settings;
-        set(settings, value);
-        if (settings != m_settings) {
-            m_settings = settings;
-            emit worldSettingsEdited(m_settings, actionName);
-        }
-        return std::nullopt;
-    };
+    return editCopy(m_settings, std::move(set), [this, actionName](const model::WorldSettings& settings) {
+        commitWorldSettings(settings, actionName);
+        return std::optional<QString>();
+    });
 }
 
 std::optional<QString> PropertyPane::commitBody(model::Body body, const QString& actionName)
@@ -593,7 +594,8 @@ std::optional<QString> PropertyPane::commitJoint(model::Joint joint, const QStri
 
 void PropertyPane::onNumberEdited(NumberField& field)
 {
-    if (!field.apply || field.edit->isReadOnly() || field.page != m_page || !field.row->isVisibleTo(this))
+    if (!field.apply || field.edit->isReadOnly() || !field.edit->isEnabled() || field.page != m_page ||
+        !field.row->isVisibleTo(this))
         return;
     const QString text = field.edit->text().trimmed();
     if (text == field.shown)
@@ -795,11 +797,16 @@ void PropertyPane::onIntegratorActivated(int index)
         return;
     model::WorldSettings settings = m_settings;
     settings.integrator = static_cast<model::IntegratorKind>(m_integrator->itemData(index).toInt());
+    clearMessage();
+    commitWorldSettings(settings, tr("Change integrator"));
+}
+
+void PropertyPane::commitWorldSettings(const model::WorldSettings& settings, const QString& actionName)
+{
     if (settings == m_settings)
         return;
-    clearMessage();
     m_settings = settings;
-    emit worldSettingsEdited(m_settings, tr("Change integrator"));
+    emit worldSettingsEdited(m_settings, actionName);
 }
 
 void PropertyPane::onFixedClicked(bool checked)
@@ -921,7 +928,10 @@ void PropertyPane::load(const model::World& world)
 
 void PropertyPane::display(bool replaceFocused)
 {
-    m_pages->setCurrentIndex(static_cast<int>(m_page));
+    // Hidden pages take no room and no tab stops. (A QStackedWidget would be as tall as its
+    // tallest page, so the short world page would scroll.)
+    for (std::size_t i = 0; i < m_pageWidgets.size(); ++i)
+        m_pageWidgets[i]->setVisible(i == static_cast<std::size_t>(m_page));
     const std::size_t selected = m_selection.bodies.size() + m_selection.springs.size() + m_selection.joints.size();
     m_note->setVisible(selected > 1);
     if (selected > 1)

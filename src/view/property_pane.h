@@ -23,7 +23,6 @@ class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
-class QStackedWidget;
 class QTableWidget;
 class QTableWidgetItem;
 
@@ -80,7 +79,7 @@ signals:
     void worldSettingsEdited(const impetus::model::WorldSettings& settings, const QString& actionName);
 
 private:
-    /// What the pane shows; also the index of its page in the stack.
+    /// What the pane shows; also the index of its page in m_pageWidgets.
     enum class Page { World, Body, Spring, Joint };
     /// The range a number must lie in.
     enum class Bound { Any, Positive, NonNegative, UnitInterval };
@@ -113,6 +112,7 @@ private:
     Apply editWorld(std::function<void(model::WorldSettings&, double)> set, const QString& actionName);
     std::optional<QString> commitBody(model::Body body, const QString& actionName);
     std::optional<QString> commitJoint(model::Joint joint, const QString& actionName);
+    void commitWorldSettings(const model::WorldSettings& settings, const QString& actionName);
     std::optional<QString> commitVertices(std::vector<Vec2> vertices, const QString& actionName);
 
     void onNumberEdited(NumberField& field);
@@ -161,7 +161,8 @@ private:
     QLabel* m_title = nullptr;
     QLabel* m_note = nullptr;
     QLabel* m_message = nullptr;
-    QStackedWidget* m_pages = nullptr;
+    QWidget* m_pages = nullptr; ///< holds the four pages, one visible
+    std::vector<QWidget*> m_pageWidgets; ///< indexed by Page
     std::vector<QFormLayout*> m_forms; ///< one per Page
     std::vector<std::unique_ptr<NumberField>> m_numbers;
 

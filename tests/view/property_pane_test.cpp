@@ -141,8 +141,15 @@ private slots:
     void refreshUpdatesLiveValuesButNotTheFocusedField();
     void refreshAfterTheBodyIsGoneShowsTheWorld();
     void multiSelectionShowsTheFirstBodyWithANote();
-    void tabReachesEveryBodyField();
+    void tabReachesEveryField_data();
+    void tabReachesEveryField();
     void everyFieldHasAnAccessibleName();
+
+private:
+    /// Presses Tab from the pane's first field until the focus comes back to it. Returns the
+    /// fields visited in order, or nothing when a visible, enabled field was not reached; sets
+    /// `expectedCount` to the number of such fields.
+    static std::vector<QWidget*> tabFromFirstField(PropertyPane& pane, std::size_t& expectedCount);
 };
 
 void PropertyPaneTest::showsTheSelectedBoxWithAngleInDegrees()
@@ -634,14 +641,8 @@ void PropertyPaneTest::multiSelectionShowsTheFirstBodyWithANote()
     QVERIFY(!note->isVisibleTo(&pane));
 }
 
-void PropertyPaneTest::tabReachesEveryBodyField()
+std::vector<QWidget*> PropertyPaneTest::tabFromFirstField(PropertyPane& pane, std::size_t& expectedCount)
 {
-    model::World world = editorWorld();
-    world.bodies[2].soft = model::SoftSettings{};
-    PropertyPane pane;
-    QVERIFY(showActive(pane));
-    pane.showSelection(world, bodySelection(2));
-
     std::vector<QWidget*> expected;
     for (QWidget* widget : pane.findChildren<QWidget*>()) {
         const bool field = qobject_cast<QLineEdit*>(widget) || qobject_cast<QAbstractButton*>(widget) ||
@@ -649,24 +650,63 @@ void PropertyPaneTest::tabReachesEveryBodyField()
         if (field && (widget->focusPolicy() & Qt::TabFocus) && widget->isVisible() && widget->isEnabled())
             expected.push_back(widget);
     }
-    QCOMPARE(expected.size(), std::size_t(23));
+    expectedCount = expected.size();
 
-    auto* name = pane.findChild<QLineEdit*>("name");
-    name->setFocus();
-    std::vector<QWidget*> visited{name};
+    // Start at the first field in tab order (the window's focus chain starts at the window) and
+    // press Tab until the focus comes back round.
+    QWidget* first = pane.nextInFocusChain();
+    while (first != &pane && std::find(expected.begin(), expected.end(), first) == expected.end())
+        first = first->nextInFocusChain();
+    first->setFocus();
+    std::vector<QWidget*> visited{first};
     for (std::size_t i = 0; i < 2 * expected.size(); ++i) {
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
-        if (QApplication::focusWidget() == name)
+        if (QApplication::focusWidget() == first)
             break;
         visited.push_back(QApplication::focusWidget());
     }
     const std::set<QWidget*> reached(visited.begin(), visited.end());
-    for (QWidget* widget : expected)
-        QVERIFY2(reached.count(widget) == 1, qPrintable(widget->objectName()));
+    for (QWidget* widget : expected) {
+        if (reached.count(widget) != 1)
+            qWarning() << "not reached by Tab:" << widget->objectName();
+    }
+    return reached.size() == expected.size() ? visited : std::vector<QWidget*>{};
+}
+
+void PropertyPaneTest::tabReachesEveryField_data()
+{
+    QTest::addColumn<Selection>("selection");
+    QTest::addColumn<int>("fields");
+    // Name, shape, vertex table and its two buttons, position ×2, angle, velocity ×2, angular
+    // velocity, mass mode, density, mass, inertia, restitution, friction, fixed, colour, soft, and
+    // the three soft fields.
+    QTest::newRow("soft polygon") << bodySelection(2) << 23;
+    QTest::newRow("world") << Selection{} << 5;
+    QTest::newRow("spring") << Selection{{}, {0}, {}} << 9;
+    QTest::newRow("rod") << Selection{{}, {}, {0}} << 8;
+    QTest::newRow("pin") << Selection{{}, {}, {1}} << 5;
+}
+
+void PropertyPaneTest::tabReachesEveryField()
+{
+    QFETCH(Selection, selection);
+    QFETCH(int, fields);
+    model::World world = editorWorld();
+    world.bodies[2].soft = model::SoftSettings{};
+    PropertyPane pane;
+    QVERIFY(showActive(pane));
+    pane.showSelection(world, selection);
+    std::size_t expectedCount = 0;
+    const std::vector<QWidget*> visited = tabFromFirstField(pane, expectedCount);
+    QCOMPARE(expectedCount, static_cast<std::size_t>(fields));
+    QCOMPARE(visited.size(), expectedCount);
+    if (selection != bodySelection(2))
+        return;
     // Top to bottom: the name, the vertex table, the position, ..., soft damping last.
     const auto at = [&visited, &pane](const char* objectName) {
         return std::find(visited.begin(), visited.end(), pane.findChild<QWidget*>(objectName)) - visited.begin();
     };
+    QCOMPARE(at("name"), 0);
     QVERIFY(at("name") < at("vertices"));
     QVERIFY(at("vertices") < at("positionX"));
     QVERIFY(at("positionX") < at("positionY"));
@@ -684,12 +724,15 @@ void PropertyPaneTest::everyFieldHasAnAccessibleName()
     pane.showSelection(editorWorld(), bodySelection(0));
     int checked = 0;
     for (QWidget* widget : pane.findChildren<QWidget*>()) {
-        if (widget->focusPolicy() == Qt::NoFocus || qobject_cast<QTableWidget*>(widget->parentWidget()))
+        const bool field = qobject_cast<QLineEdit*>(widget) || qobject_cast<QAbstractButton*>(widget) ||
+                           qobject_cast<QComboBox*>(widget) || qobject_cast<QTableWidget*>(widget);
+        // The parts Qt builds inside a combo box or a table are named by Qt itself.
+        bool internal = false;
+        for (QWidget* parent = widget->parentWidget(); parent != &pane; parent = parent->parentWidget())
+            internal = internal || qobject_cast<QComboBox*>(parent) || qobject_cast<QTableWidget*>(parent);
+        if (!field || internal)
             continue;
-        if (widget->objectName().startsWith("qt_"))
-            continue;
-        QVERIFY2(!widget->accessibleName().isEmpty(), qPrintable(widget->metaObject()->className() +
-                                                                 QString(" ") + widget->objectName()));
+        QVERIFY2(!widget->accessibleName().isEmpty(), qPrintable(widget->objectName()));
         ++checked;
     }
     QVERIFY(checked > 40);
