@@ -600,25 +600,11 @@ void PropertyPane::onNumberEdited(NumberField& field)
     const QString text = field.edit->text().trimmed();
     if (text == field.shown)
         return;
-    std::optional<QString> problem;
-    const std::optional<double> shownValue = parseNumber(text);
-    if (!shownValue) {
-        problem = tr("%1: “%2” is not a number.").arg(field.label, text);
-    } else if (!std::isfinite(*shownValue)) {
-        problem = tr("%1 must be a finite number (got %2).").arg(field.label, text);
-    } else if (field.bound == Bound::Positive && !(*shownValue > 0)) {
-        problem = tr("%1 must be greater than 0 (got %2).").arg(field.label, text);
-    } else if (field.bound == Bound::NonNegative && !(*shownValue >= 0)) {
-        problem = tr("%1 must be 0 or greater (got %2).").arg(field.label, text);
-    } else if (field.bound == Bound::UnitInterval && !(*shownValue >= 0 && *shownValue <= 1)) {
-        problem = tr("%1 must be between 0 and 1 (got %2).").arg(field.label, text);
-    } else {
-        problem = field.apply(*shownValue / field.displayScale);
-    }
-    if (problem)
-        refuse(*problem);
-    else
-        clearMessage();
+    double shownValue = 0;
+    std::optional<QString> problem = checkNumber(field.label, text, field.bound, shownValue);
+    if (!problem)
+        problem = field.apply(shownValue / field.displayScale);
+    report(problem);
     // Refused or applied, the field shows the model's value, in the pane's format.
     field.shown = formatNumber(field.read() * field.displayScale);
     field.edit->setText(field.shown);
@@ -678,10 +664,7 @@ void PropertyPane::onSoftDensityEdited()
         body.soft = soft;
         problem = commitBody(std::move(body), tr("Change soft density"));
     }
-    if (problem)
-        refuse(*problem);
-    else
-        clearMessage();
+    report(problem);
     displaySoftDensity(true);
 }
 
@@ -693,21 +676,14 @@ void PropertyPane::onVertexEdited(QTableWidgetItem* item)
     const QString text = item->text().trimmed();
     const QString label = tr("Vertex %1 %2").arg(item->row()).arg(item->column() == 0 ? QStringLiteral("x")
                                                                                         : QStringLiteral("y"));
-    const std::optional<double> value = parseNumber(text);
-    std::optional<QString> problem;
-    if (!value) {
-        problem = tr("%1: “%2” is not a number.").arg(label, text);
-    } else if (!std::isfinite(*value)) {
-        problem = tr("%1 must be a finite number (got %2).").arg(label, text);
-    } else {
+    double value = 0;
+    std::optional<QString> problem = checkNumber(label, text, Bound::Any, value);
+    if (!problem) {
         std::vector<Vec2> vertices = polygon->vertices;
-        vertices[static_cast<std::size_t>(item->row())][item->column()] = *value;
+        vertices[static_cast<std::size_t>(item->row())][item->column()] = value;
         problem = commitVertices(std::move(vertices), tr("Move vertex"));
     }
-    if (problem)
-        refuse(*problem);
-    else
-        clearMessage();
+    report(problem);
     fillVertexTable();
 }
 
@@ -723,10 +699,7 @@ void PropertyPane::addVertex()
     // Halfway along an edge keeps the outline as it is; the user then moves the new vertex.
     const Vec2 midpoint = (vertices[at] + vertices[(at + 1) % vertices.size()]) / 2;
     vertices.insert(vertices.begin() + row + 1, midpoint);
-    if (const std::optional<QString> problem = commitVertices(std::move(vertices), tr("Add vertex")))
-        refuse(*problem);
-    else
-        clearMessage();
+    report(commitVertices(std::move(vertices), tr("Add vertex")));
     fillVertexTable();
     m_vertices->setCurrentCell(row + 1, 0);
 }
@@ -743,10 +716,7 @@ void PropertyPane::removeVertex()
     }
     std::vector<Vec2> vertices = polygon->vertices;
     vertices.erase(vertices.begin() + row);
-    if (const std::optional<QString> problem = commitVertices(std::move(vertices), tr("Remove vertex")))
-        refuse(*problem);
-    else
-        clearMessage();
+    report(commitVertices(std::move(vertices), tr("Remove vertex")));
     fillVertexTable();
     m_vertices->setCurrentCell(std::min(row, m_vertices->rowCount() - 1), 0);
 }
@@ -770,6 +740,13 @@ std::optional<QString> PropertyPane::commitVertices(std::vector<Vec2> vertices, 
     return commitBody(std::move(body), actionName);
 }
 
+void PropertyPane::applyBody(model::Body body, const QString& actionName)
+{
+    report(commitBody(std::move(body), actionName));
+    // A refused change must not leave a check box or combo box showing it.
+    displayBody(true);
+}
+
 void PropertyPane::onMassModeActivated(int index)
 {
     if (m_page != Page::Body)
@@ -783,12 +760,8 @@ void PropertyPane::onMassModeActivated(int index)
         body.massSpec = model::MassSpec{mode, m_body.mass};
     else
         body.massSpec = model::MassSpec{mode, m_body.density()};
-    clearMessage();
-    const QString action = mode == model::MassMode::Mass ? tr("Give mass instead of density")
-                                                         : tr("Give density instead of mass");
-    if (const std::optional<QString> problem = commitBody(std::move(body), action))
-        refuse(*problem);
-    displayBody(true);
+    applyBody(std::move(body), mode == model::MassMode::Mass ? tr("Give mass instead of density")
+                                                             : tr("Give density instead of mass"));
 }
 
 void PropertyPane::onIntegratorActivated(int index)
@@ -815,10 +788,7 @@ void PropertyPane::onFixedClicked(bool checked)
         return;
     model::Body body = m_body;
     body.fixed = checked;
-    clearMessage();
-    if (const std::optional<QString> problem = commitBody(std::move(body), checked ? tr("Fix body") : tr("Free body")))
-        refuse(*problem);
-    displayBody(true);
+    applyBody(std::move(body), checked ? tr("Fix body") : tr("Free body"));
 }
 
 void PropertyPane::onSoftClicked(bool checked)
@@ -830,11 +800,7 @@ void PropertyPane::onSoftClicked(bool checked)
         body.soft = model::SoftSettings{};
     else
         body.soft.reset();
-    clearMessage();
-    const QString action = checked ? tr("Turn on soft mode") : tr("Turn off soft mode");
-    if (const std::optional<QString> problem = commitBody(std::move(body), action))
-        refuse(*problem);
-    displayBody(true);
+    applyBody(std::move(body), checked ? tr("Turn on soft mode") : tr("Turn off soft mode"));
 }
 
 void PropertyPane::chooseColor()
@@ -858,9 +824,7 @@ void PropertyPane::onColorChosen(const QColor& color)
     model::Body body = m_body;
     body.color = model::Color{static_cast<std::uint8_t>(color.red()), static_cast<std::uint8_t>(color.green()),
                               static_cast<std::uint8_t>(color.blue())};
-    clearMessage();
-    commitBody(std::move(body), tr("Change colour"));
-    displayBody(true);
+    applyBody(std::move(body), tr("Change colour"));
 }
 
 // ---- Showing ------------------------------------------------------------------------------------
@@ -1084,10 +1048,36 @@ void PropertyPane::refuse(const QString& message)
     QAccessible::updateAccessibility(&event);
 }
 
+void PropertyPane::report(const std::optional<QString>& problem)
+{
+    if (problem)
+        refuse(*problem);
+    else
+        clearMessage();
+}
+
 void PropertyPane::clearMessage()
 {
     m_message->clear();
     m_message->hide();
+}
+
+std::optional<QString> PropertyPane::checkNumber(const QString& label, const QString& text, Bound bound,
+                                                double& value) const
+{
+    const std::optional<double> parsed = parseNumber(text);
+    if (!parsed)
+        return tr("%1: “%2” is not a number.").arg(label, text);
+    value = *parsed;
+    if (!std::isfinite(value))
+        return tr("%1 must be a finite number (got %2).").arg(label, text);
+    if (bound == Bound::Positive && !(value > 0))
+        return tr("%1 must be greater than 0 (got %2).").arg(label, text);
+    if (bound == Bound::NonNegative && !(value >= 0))
+        return tr("%1 must be 0 or greater (got %2).").arg(label, text);
+    if (bound == Bound::UnitInterval && !(value >= 0 && value <= 1))
+        return tr("%1 must be between 0 and 1 (got %2).").arg(label, text);
+    return std::nullopt;
 }
 
 QString PropertyPane::formatNumber(double value) const { return m_locale.toString(value, 'g', kSignificantDigits); }

@@ -48,6 +48,7 @@ class PropertyPane : public QWidget {
 public:
     /// An empty pane (it shows default world settings until showSelection() is called).
     explicit PropertyPane(QWidget* parent = nullptr);
+    /// Disconnects the fields from the pane before they are deleted.
     ~PropertyPane() override;
 
     /// Shows the attributes of the selection in `world`: one body, one spring, one joint, or the
@@ -106,13 +107,21 @@ private:
                        const QString& unit, std::function<Vec2()> read, const std::function<Apply(int axis)>& apply);
     QLineEdit* addText(QFormLayout* form, const QString& objectName, const QString& label);
 
+    /// Edits of the shown item: copy it, change the copy with `set`, then commit it.
     Apply editBody(std::function<void(model::Body&, double)> set, const QString& actionName);
     Apply editSpring(std::function<void(model::Spring&, double)> set, const QString& actionName);
     Apply editJoint(std::function<void(model::Joint&, double)> set, const QString& actionName);
     Apply editWorld(std::function<void(model::WorldSettings&, double)> set, const QString& actionName);
+    /// Updates the derived fields and checks the body (finite, positive mass and inertia); when it
+    /// differs from the shown body, makes it the shown body and emits bodyEdited. A message when
+    /// refused. commitJoint() and commitWorldSettings() do the same for the other items.
     std::optional<QString> commitBody(model::Body body, const QString& actionName);
+    /// commitBody(), then the outcome in the message area and the body in the widgets.
+    void applyBody(model::Body body, const QString& actionName);
     std::optional<QString> commitJoint(model::Joint joint, const QString& actionName);
     void commitWorldSettings(const model::WorldSettings& settings, const QString& actionName);
+    /// Checks the polygon (model::validatePolygon) and commits the body with it, moved so that the
+    /// vertices keep their world positions where they did not change.
     std::optional<QString> commitVertices(std::vector<Vec2> vertices, const QString& actionName);
 
     void onNumberEdited(NumberField& field);
@@ -138,7 +147,11 @@ private:
     void displayJoint();
     void fillVertexTable();
     void refuse(const QString& message);
+    /// refuse(*problem), or clearMessage() when there is no problem.
+    void report(const std::optional<QString>& problem);
     void clearMessage();
+    /// Parses `text` into `value` and checks it against `bound`; a message naming `label` if not.
+    std::optional<QString> checkNumber(const QString& label, const QString& text, Bound bound, double& value) const;
     QString formatNumber(double value) const;
     std::optional<double> parseNumber(const QString& text) const;
 
