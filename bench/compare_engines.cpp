@@ -117,6 +117,7 @@ struct Options {
     std::string scene; ///< empty: all
     std::vector<std::string> engines = engineNames();
     bool quick = false;
+    bool oneThread = false; ///< Impetus without its second thread
 };
 
 /// "box2d,chipmunk" → {"box2d", "chipmunk"}, in the canonical order; nullopt for an unknown name.
@@ -143,7 +144,7 @@ std::optional<std::vector<std::string>> parseEngineList(const std::string& list)
 
 void printUsage(std::ostream& out)
 {
-    out << "usage: impetus-bench-compare [--steps N] [--scene NAME] [--engines LIST] [--quick]\n"
+    out << "usage: impetus-bench-compare [--steps N] [--scene NAME] [--engines LIST] [--one-thread] [--quick]\n"
            "  --steps N       steps per scene (default "
         << kDefaultSteps << ", " << kQuickSteps
         << " with --quick)\n"
@@ -151,6 +152,7 @@ void printUsage(std::ostream& out)
     for (const SceneRecipe& recipe : recipes())
         out << ' ' << recipe.name;
     out << "\n  --engines LIST  comma-separated, from impetus,box2d,chipmunk (default: all three)\n"
+           "  --one-thread    Impetus without its second thread (the same results, one core)\n"
            "  --quick         small scenes and few steps: a smoke test, not a measurement\n";
 }
 
@@ -185,6 +187,8 @@ std::optional<Options> parseArguments(int argc, char** argv)
                 return std::nullopt;
             }
             options.engines = *engines;
+        } else if (argument == "--one-thread") {
+            options.oneThread = true;
         } else if (argument == "--quick") {
             options.quick = true;
         } else if (argument == "--help" || argument == "-h") {
@@ -298,16 +302,18 @@ std::size_t countNonFinite(const std::vector<Pose>& poses)
 }
 
 /// The engine called `name` (one of engineNames()) holding `scene`.
-std::unique_ptr<Engine> makeEngine(const std::string& name, const Scene& scene)
+std::unique_ptr<Engine> makeEngine(const std::string& name, const Scene& scene,
+                                   const controller::SolverSettings& impetusSolver)
 {
     if (name == "impetus")
-        return std::make_unique<ImpetusEngine>(scene.world, scene.turning);
+        return std::make_unique<ImpetusEngine>(scene.world, scene.turning, impetusSolver);
     if (name == "box2d")
         return makeBox2dEngine(scene.world, scene.turning);
     return makeChipmunkEngine(scene.world, scene.turning);
 }
 
-void runScene(const Scene& scene, int steps, const std::vector<std::string>& engines)
+void runScene(const Scene& scene, int steps, const std::vector<std::string>& engines,
+              const controller::SolverSettings& impetusSolver)
 {
     const model::World& world = scene.world;
     const auto dynamic =
@@ -322,7 +328,7 @@ void runScene(const Scene& scene, int steps, const std::vector<std::string>& eng
     // scene is alive at a time.
     std::vector<Run> runs;
     for (const std::string& name : engines) {
-        const std::unique_ptr<Engine> engine = makeEngine(name, scene);
+        const std::unique_ptr<Engine> engine = makeEngine(name, scene, impetusSolver);
         runs.push_back(run(*engine, steps));
         if (const auto* impetus = dynamic_cast<const ImpetusEngine*>(engine.get()))
             runs.back().profileSum = impetus->profileSum();
@@ -377,10 +383,13 @@ int main(int argc, char** argv)
         return 2;
 
     announceChipmunk();
-    const controller::SolverSettings impetusSolver;
+    controller::SolverSettings impetusSolver;
+    impetusSolver.secondThread = !options->oneThread;
     std::cout << "# Impetus vs Box2D " << box2dVersion() << " vs Chipmunk " << chipmunkVersion() << "\n\n"
-              << "One thread per engine, run one after the other; " << std::thread::hardware_concurrency()
-              << " hardware threads. Sleeping is off in every engine.\n"
+              << "The engines run one after the other; " << std::thread::hardware_concurrency()
+              << " hardware threads. Box2D 2.4 and Chipmunk use one thread; Impetus uses "
+              << (impetusSolver.secondThread ? "two for large worlds (docs/physics.md, \"Two threads\")" : "one (--one-thread)")
+              << ". Sleeping is off in every engine.\n"
               << "Impetus: " << impetusSolver.velocityIterations << " velocity / " << impetusSolver.positionIterations
               << " position iterations (controller::Simulation defaults), double.\n"
               << "Box2D: " << kBox2dVelocityIterations << " velocity / " << kBox2dPositionIterations
@@ -393,7 +402,7 @@ int main(int argc, char** argv)
     for (const SceneRecipe& recipe : recipes()) {
         if (!options->scene.empty() && recipe.name != options->scene)
             continue;
-        runScene(recipe.build(options->quick), options->steps, options->engines);
+        runScene(recipe.build(options->quick), options->steps, options->engines, impetusSolver);
     }
     return 0;
 }

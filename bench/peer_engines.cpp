@@ -310,9 +310,11 @@ private:
 
 // ---- Impetus ---------------------------------------------------------------------------------
 
-ImpetusEngine::ImpetusEngine(const model::World& world, const Turning& turning)
+ImpetusEngine::ImpetusEngine(const model::World& world, const Turning& turning,
+                             const controller::SolverSettings& settings)
     : m_world(world)
     , m_turning(turning)
+    , m_simulation(settings)
 {
 }
 

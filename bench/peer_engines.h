@@ -41,11 +41,11 @@ public:
     virtual std::vector<Pose> poses() const = 0;
 };
 
-/// Impetus itself: a copy of the world stepped by controller::Simulation with its default solver
+/// Impetus itself: a copy of the world stepped by controller::Simulation with the given solver
 /// settings. Keeps the sum of every step's profile.
 class ImpetusEngine final : public Engine {
 public:
-    ImpetusEngine(const model::World& world, const Turning& turning);
+    ImpetusEngine(const model::World& world, const Turning& turning, const controller::SolverSettings& settings);
     std::string name() const override { return "Impetus"; }
     void step() override;
     std::vector<Pose> poses() const override;
