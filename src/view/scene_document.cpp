@@ -54,6 +54,23 @@ const model::World& SceneDocument::world() const { return m_runner->world(); }
 
 bool SceneDocument::isModified() const { return !m_undoStack->isClean(); }
 
+bool SceneDocument::hasUnsavedEdits() const
+{
+    if (m_undoStack->isClean())
+        return false;
+    const int clean = m_undoStack->cleanIndex();
+    if (clean < 0)
+        return true;
+    // The commands between the saved state and now, whichever way the user went.
+    const int from = std::min(clean, m_undoStack->index());
+    const int to = std::max(clean, m_undoStack->index());
+    for (int i = from; i < to; ++i) {
+        if (!dynamic_cast<const WorldSnapshotCommand*>(m_undoStack->command(i)))
+            return true;
+    }
+    return false;
+}
+
 void SceneDocument::setSelection(const Selection& selection)
 {
     const model::World& w = world();

@@ -59,8 +59,14 @@ public:
     /// given to setScene().
     QString displayName() const { return m_displayName; }
 
-    /// True when there are changes since the scene was loaded or saved.
+    /// True when there are changes since the scene was loaded or saved (runs included: the
+    /// bodies are elsewhere than in the file).
     bool isModified() const;
+
+    /// True when, since the scene was loaded or saved, there are edits other than running,
+    /// stepping and resetting: work that would be lost. A run alone changes nothing the file does
+    /// not already hold, so the window does not ask about it before discarding.
+    bool hasUnsavedEdits() const;
 
     /// What is selected. Indices are always valid for world().
     Selection selection() const { return m_selection; }
