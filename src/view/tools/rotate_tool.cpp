@@ -96,8 +96,11 @@ void RotateTool::mouseMove(const ToolEvent& event)
 
 void RotateTool::mouseRelease(const ToolEvent& event)
 {
-    if (event.button == Qt::LeftButton)
-        m_rotation.end();
+    if (event.button != Qt::LeftButton)
+        return;
+    // The release decides the final angle, with the modifiers held at that moment.
+    m_rotation.update(m_document, event.scenePos, event.modifiers.testFlag(Qt::ShiftModifier));
+    m_rotation.end();
 }
 
 void RotateTool::paintOverlay(QPainter& painter, double pixelsPerMetre) const

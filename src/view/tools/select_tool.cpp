@@ -148,6 +148,8 @@ void SelectTool::mouseRelease(const ToolEvent& event)
         return;
     if (m_mode == Mode::Moving)
         moveTo(event.scenePos);
+    if (m_mode == Mode::Rotating)
+        m_rotation.update(m_document, event.scenePos, event.modifiers.testFlag(Qt::ShiftModifier));
     m_rotation.end();
     m_mode = Mode::Idle;
 }
