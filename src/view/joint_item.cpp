@@ -56,7 +56,7 @@ void JointItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
         painter->drawEllipse(QPointF(0, 0), r, r);
         painter->setPen(Qt::NoPen);
         painter->setBrush(color);
-        painter->drawEllipse(QPointF(0, 0), r / 2.5, r / 2.5);
+        painter->drawEllipse(QPointF(0, 0), r * constants::kPinDotFraction, r * constants::kPinDotFraction);
         return;
     }
     QPen pen(color, constants::kRodWidthPx);

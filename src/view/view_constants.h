@@ -115,6 +115,14 @@ inline constexpr double kPinMarkerRadiusPx = 5.0;
 /// Width of a rod joint's line, px.
 inline constexpr double kRodWidthPx = 3.0;
 
+/// Radius of the dot in a pin's ring, as a fraction of the ring's radius.
+inline constexpr double kPinDotFraction = 0.4;
+
+/// Opacity of the fill of a shape being drawn and of the rubber band: enough to see the area, light
+/// enough to see the bodies under it.
+inline constexpr float kPreviewFillAlpha = 0.12f;
+inline constexpr float kRubberBandFillAlpha = 0.08f;
+
 /// Width of the selection outline drawn over selected items, px.
 inline constexpr double kSelectionWidthPx = 2.5;
 

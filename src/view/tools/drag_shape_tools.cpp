@@ -58,7 +58,7 @@ void paintPreview(QPainter& painter, const QPainterPath& path)
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(0.12f);
+    fill.setAlphaF(constants::kPreviewFillAlpha);
     painter.setBrush(fill);
     painter.drawPath(path);
 }

@@ -212,7 +212,7 @@ void SelectTool::paintOverlay(QPainter& painter, double pixelsPerMetre) const
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(0.08f);
+    fill.setAlphaF(constants::kRubberBandFillAlpha);
     painter.setBrush(fill);
     painter.drawRect(QRectF(m_pressPos, m_cursor).normalized());
 }
