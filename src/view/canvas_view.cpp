@@ -430,7 +430,20 @@ void CanvasView::keyPressEvent(QKeyEvent* event)
         event->accept();
         return;
     }
-    QGraphicsView::keyPressEvent(event);
+    // QAbstractScrollArea would scroll on arrows and Page Up/Down. The arrows belong to Step and
+    // the nudge, and panning has its own gestures, so the canvas leaves them to the window.
+    switch (event->key()) {
+    case Qt::Key_Left:
+    case Qt::Key_Right:
+    case Qt::Key_Up:
+    case Qt::Key_Down:
+    case Qt::Key_PageUp:
+    case Qt::Key_PageDown:
+        event->ignore();
+        return;
+    default:
+        QGraphicsView::keyPressEvent(event);
+    }
 }
 
 void CanvasView::keyReleaseEvent(QKeyEvent* event)

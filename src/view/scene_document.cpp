@@ -4,6 +4,7 @@
 #include "view/scene_commands.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QFile>
 #include <QUndoStack>
@@ -40,6 +41,7 @@ SceneDocument::SceneDocument(QObject* parent)
     , m_runner(new SimulationRunner(this))
     , m_undoStack(new QUndoStack(this))
 {
+    m_undoStack->setUndoLimit(constants::kUndoLimit);
     connect(m_runner, &SimulationRunner::worldChanged, this, [this] {
         dropInvalidSelection();
         emit worldChanged();

@@ -76,6 +76,10 @@ inline constexpr double kSpringLeadFraction = 0.1;
 /// Radius of the marker drawn at a spring's fixed world anchor, px.
 inline constexpr double kAnchorMarkerRadiusPx = 4.0;
 
+/// Most commands the undo stack keeps. A run keeps two copies of the world, so a long session with
+/// a large scene must not keep every one; 200 is far more undo than a lesson needs.
+inline constexpr int kUndoLimit = 200;
+
 /// Each notch of the mouse wheel zooms by this factor (toward the cursor): 1.2 takes about a dozen
 /// notches to go from a whole classroom scene to a single body, without jumps that lose the place.
 inline constexpr double kZoomPerWheelNotch = 1.2;
