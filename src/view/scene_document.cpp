@@ -101,9 +101,17 @@ void SceneDocument::setScene(model::World world, const QString& filePath, const 
 
 std::optional<QString> SceneDocument::saveAs(const QString& path)
 {
+    // A pin is saved by its world point, from which loading derives the body-frame anchors. Bodies
+    // may have been moved or run since the pin was made, so the point written is where the hinge
+    // is now: on body A, or the fixed world point of a pin to the world.
+    model::World toSave = world();
+    for (model::Joint& joint : toSave.joints) {
+        if (joint.type == model::JointType::Pin)
+            joint.worldAnchor = joint.bodyB ? toSave.body(joint.bodyA).worldPoint(joint.anchorA) : joint.anchorB;
+    }
     const QByteArray native = QFile::encodeName(path);
     if (const std::optional<std::string> error =
-            model::saveSceneFile(std::filesystem::path(native.toStdString()), world()))
+            model::saveSceneFile(std::filesystem::path(native.toStdString()), toSave))
         return QString::fromStdString(*error);
     m_filePath = path;
     m_displayName = sceneDisplayName(path);

@@ -41,11 +41,12 @@ model::World threeBodyWorld()
     rod.type = model::JointType::Rod;
     rod.bodyA = model::BodyId{1};
     rod.bodyB = model::BodyId{2};
-    rod.length = 2;
+    rod.length = 2; // centre to centre, as loading would derive it
     model::Joint pin;
     pin.type = model::JointType::Pin;
     pin.bodyA = model::BodyId{2};
-    pin.worldAnchor = Vec2(4, 0);
+    pin.worldAnchor = Vec2(4, 0); // c's centre: anchorA is zero, anchorB is the world point
+    pin.anchorB = Vec2(4, 0);
     world.joints = {rod, pin};
     return world;
 }
@@ -77,6 +78,7 @@ private slots:
     void runAloneIsNotUnsavedWork();
     void saveAndLoadRoundTrip();
     void selectionDropsInvalidIndices();
+    void movedPinnedBodySavesItsHinge();
 };
 
 void SceneDocumentTest::setBodyUndoesAndRedoes()
@@ -339,6 +341,39 @@ void SceneDocumentTest::selectionDropsInvalidIndices()
     QCOMPARE(changed.count(), 1);
     document.remove(Selection{{2}, {}, {}}, QStringLiteral("Delete"));
     QVERIFY(document.selection().empty());
+}
+
+void SceneDocumentTest::movedPinnedBodySavesItsHinge()
+{
+    // Two boxes pinned together at (1, 0.5); both are then moved up by 2 m.
+    model::World world;
+    world.bodies.push_back(test::makeBody("a", model::Box{1, 1}, Vec2(0, 0)));
+    world.bodies.push_back(test::makeBody("b", model::Box{1, 1}, Vec2(2, 0)));
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = model::BodyId{0};
+    pin.bodyB = model::BodyId{1};
+    pin.worldAnchor = Vec2(1, 0.5);
+    pin.anchorA = Vec2(1, 0.5);
+    pin.anchorB = Vec2(-1, 0.5);
+    world.joints.push_back(pin);
+    SceneDocument document;
+    document.setScene(world, QString(), QStringLiteral("pinned"));
+    document.setPoses({0, 1}, {BodyPose{Vec2(0, 2), 0}, BodyPose{Vec2(2, 2), 0}}, QStringLiteral("Move"),
+                      document.newGesture());
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("pinned.json"));
+    QVERIFY(!document.saveAs(path).has_value());
+    const model::SceneLoadResult loaded = impetus::view::loadScene(path);
+    QVERIFY(loaded.ok());
+    const model::Joint& reloaded = loaded.world->joints.at(0);
+    QCOMPARE(reloaded.worldAnchor, Vec2(1, 2.5));
+    QVERIFY((reloaded.anchorA - pin.anchorA).norm() < 1e-12);
+    QVERIFY((reloaded.anchorB - pin.anchorB).norm() < 1e-12);
+    // The document's own joint is untouched by saving.
+    QCOMPARE(document.world().joints[0].worldAnchor, Vec2(1, 0.5));
 }
 
 QTEST_MAIN(SceneDocumentTest)
