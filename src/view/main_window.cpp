@@ -295,6 +295,9 @@ void MainWindow::createToolBars()
     speedLabel->setBuddy(m_speedBox);
     connect(m_speedBox, &QComboBox::currentIndexChanged, this,
             [this](int index) { m_document->runner().setSpeed(m_speedBox->itemData(index).toDouble()); });
+    // Back to the canvas once a speed is chosen, so that Space plays again instead of opening
+    // the list.
+    connect(m_speedBox, &QComboBox::activated, m_canvas, [this] { m_canvas->setFocus(); });
     runBar->addWidget(m_speedBox);
 
     QToolBar* toolBar = new QToolBar(tr("Tools"), this);
