@@ -190,6 +190,8 @@ int main(int argc, char* argv[])
 
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("impetus"));
+    // QSettings (recent files, the dock layout) live under this name.
+    QApplication::setOrganizationName(QStringLiteral("impetus"));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(translate("Impetus, a 2D physics lab for the classroom."));

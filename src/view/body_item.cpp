@@ -75,6 +75,14 @@ void BodyItem::setColliding(bool colliding)
     update();
 }
 
+void BodyItem::setHighlighted(bool on)
+{
+    if (on == m_highlighted)
+        return;
+    m_highlighted = on;
+    update();
+}
+
 void BodyItem::setPose(const model::BodyState& state)
 {
     // Built from cos and sin directly: in the y-up scene, (x, y) ↦ (c·x − s·y, s·x + c·y) is the
@@ -106,6 +114,12 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
     painter->drawPath(m_outline);
     if (!m_radiusLine.isNull())
         painter->drawLine(m_radiusLine);
+    if (m_highlighted) {
+        QPen selection(constants::kSelectionColor, constants::kSelectionWidthPx, Qt::DashLine);
+        selection.setCosmetic(true);
+        painter->setPen(selection);
+        painter->drawPath(m_outline);
+    }
 }
 
 } // namespace impetus::view

@@ -40,6 +40,12 @@ public:
     /// Whether the item is drawn as colliding.
     bool isColliding() const { return m_colliding; }
 
+    /// Draws a selection outline over the body while `on`.
+    void setHighlighted(bool on);
+
+    /// Whether the selection outline is drawn.
+    bool isHighlighted() const { return m_highlighted; }
+
     /// The outline of the body in its own frame, m.
     QPainterPath shape() const override;
 
@@ -65,6 +71,7 @@ private:
     Look m_own; ///< in the body's colour
     Look m_red; ///< while colliding
     bool m_colliding = false;
+    bool m_highlighted = false;
 };
 
 } // namespace impetus::view

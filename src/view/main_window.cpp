@@ -2,10 +2,16 @@
 
 #include "controller/diagnostics.h"
 #include "view/canvas_view.h"
+#include "view/example_catalog.h"
+#include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
 
 #include <QAction>
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QIcon>
@@ -13,10 +19,13 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
+#include <QUndoStack>
 
+#include <array>
 #include <utility>
 
 namespace impetus::view {
@@ -30,95 +39,316 @@ constexpr int kStatusLabelPaddingPx = 8;
 /// a file with hundreds of problems still gives a box that fits on the screen.
 constexpr qsizetype kProblemsShown = 10;
 
+/// Entries of File > Open Recent: enough for a lesson's scenes, few enough to scan.
+constexpr qsizetype kMaxRecentFiles = 8;
+
+/// The speeds of the run controls, simulated seconds per wall second.
+constexpr std::array<double, 7> kSpeeds = {0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 4.0};
+constexpr int kRealTimeSpeedIndex = 3;
+
+/// QSettings keys.
+const QString kRecentFilesKey = QStringLiteral("recentFiles");
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kWindowStateKey = QStringLiteral("window/state");
+const QString kSnapKey = QStringLiteral("view/snapToGrid");
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
-    , m_runner(new SimulationRunner(this))
-    , m_canvas(new CanvasView(*m_runner, this))
+    , m_document(new SceneDocument(this))
+    , m_canvas(new CanvasView(m_document->runner(), this))
 {
+    m_canvas->setDocument(*m_document);
     setCentralWidget(m_canvas);
     setWindowIcon(QIcon(QStringLiteral(":/icons/impetus.svg")));
     setAccessibleName(tr("Impetus main window"));
 
     createActions();
+    createToolActions();
     createMenus();
-    createToolBar();
+    createToolBars();
+    createDock();
     createStatusBar();
 
-    connect(m_runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
-    connect(m_runner, &SimulationRunner::stepped, this, &MainWindow::updateStatus);
-    connect(m_runner, &SimulationRunner::worldChanged, this, &MainWindow::updateStatus);
+    SimulationRunner& runner = m_document->runner();
+    connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
+    connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
+    connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
+    connect(m_document, &SceneDocument::fileChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_canvas, &CanvasView::spaceTapped, m_playAction, &QAction::toggle);
+
+    const QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kWindowStateKey).toByteArray());
+    m_snapAction->setChecked(settings.value(kSnapKey, false).toBool());
 
     m_canvas->setFocus();
     updateTitle();
     updateStatus();
 }
 
+SimulationRunner& MainWindow::runner() { return m_document->runner(); }
+
+const SimulationRunner& MainWindow::runner() const { return m_document->runner(); }
+
+QString MainWindow::sceneName() const { return m_document->displayName(); }
+
 void MainWindow::createActions()
 {
-    m_openAction = new QAction(tr("&Open…"), this);
+    m_newAction = new QAction(QIcon::fromTheme(QStringLiteral("document-new")), tr("&New"), this);
+    m_newAction->setShortcut(QKeySequence::New);
+    m_newAction->setStatusTip(tr("Start an empty scene"));
+    connect(m_newAction, &QAction::triggered, this, &MainWindow::newScene);
+
+    m_openAction = new QAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
     m_openAction->setStatusTip(tr("Open a scene file"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openSceneDialog);
+
+    m_saveAction = new QAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"), this);
+    m_saveAction->setShortcut(QKeySequence::Save);
+    m_saveAction->setStatusTip(tr("Save the scene to its file"));
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
+
+    m_saveAsAction = new QAction(tr("Save &As…"), this);
+    m_saveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+    m_saveAsAction->setStatusTip(tr("Save the scene to a new file"));
+    connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAsDialog);
 
     m_quitAction = new QAction(tr("&Quit"), this);
     m_quitAction->setShortcut(QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
+    QUndoStack* stack = m_document->undoStack();
+    m_undoAction = stack->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+    m_redoAction = stack->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+
+    m_deleteAction = new QAction(QIcon::fromTheme(QStringLiteral("edit-delete")), tr("&Delete"), this);
+    m_deleteAction->setShortcut(QKeySequence::Delete);
+    m_deleteAction->setStatusTip(tr("Delete the selection, and the springs and joints on deleted bodies"));
+    connect(m_deleteAction, &QAction::triggered, this,
+            [this] { m_document->remove(m_document->selection(), tr("Delete")); });
+    const auto updateDelete = [this] { m_deleteAction->setEnabled(!m_document->selection().empty()); };
+    connect(m_document, &SceneDocument::selectionChanged, this, updateDelete);
+    updateDelete();
+
+    m_selectAllAction = new QAction(tr("Select &All"), this);
+    m_selectAllAction->setShortcut(QKeySequence::SelectAll);
+    connect(m_selectAllAction, &QAction::triggered, this, [this] {
+        Selection all;
+        const model::World& world = m_document->world();
+        for (std::size_t i = 0; i < world.bodies.size(); ++i)
+            all.bodies.push_back(static_cast<int>(i));
+        for (std::size_t i = 0; i < world.springs.size(); ++i)
+            all.springs.push_back(static_cast<int>(i));
+        for (std::size_t i = 0; i < world.joints.size(); ++i)
+            all.joints.push_back(static_cast<int>(i));
+        m_document->setSelection(all);
+    });
+
+    m_snapAction = new QAction(tr("&Snap to Grid"), this);
+    m_snapAction->setCheckable(true);
+    m_snapAction->setShortcut(QKeySequence(Qt::Key_G));
+    m_snapAction->setStatusTip(tr("Place and move points on the grid lines' crossings"));
+    connect(m_snapAction, &QAction::toggled, m_canvas, &CanvasView::setSnapToGrid);
+
+    m_frameAction = new QAction(tr("&Frame Scene"), this);
+    m_frameAction->setShortcut(QKeySequence(Qt::Key_Home));
+    m_frameAction->setStatusTip(tr("Zoom to show every body"));
+    connect(m_frameAction, &QAction::triggered, m_canvas, &CanvasView::frameScene);
+
     m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"), this);
     m_playAction->setCheckable(true);
     m_playAction->setShortcut(QKeySequence(Qt::Key_Space));
     m_playAction->setToolTip(tr("Run the simulation (Space)"));
-    connect(m_playAction, &QAction::toggled, m_runner, &SimulationRunner::setRunning);
+    connect(m_playAction, &QAction::toggled, &m_document->runner(), &SimulationRunner::setRunning);
 
     m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("Step"), this);
     m_stepAction->setShortcut(QKeySequence(Qt::Key_Right));
     m_stepAction->setToolTip(tr("Advance one time step (→)"));
-    connect(m_stepAction, &QAction::triggered, m_runner, &SimulationRunner::stepOnce);
+    connect(m_stepAction, &QAction::triggered, m_document, &SceneDocument::stepOnce);
+
+    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Reset"), this);
+    m_resetAction->setShortcut(QKeySequence(Qt::Key_R));
+    m_resetAction->setToolTip(tr("Go back to the state at the last Play (R)"));
+    connect(m_resetAction, &QAction::triggered, m_document, &SceneDocument::resetToLastPlay);
+
+    for (QAction* action : {m_newAction, m_openAction, m_saveAction, m_saveAsAction, m_quitAction, m_undoAction,
+                            m_redoAction, m_deleteAction, m_selectAllAction, m_snapAction, m_frameAction,
+                            m_playAction, m_stepAction, m_resetAction})
+        addAction(action);
+}
+
+void MainWindow::createToolActions()
+{
+    struct ToolEntry {
+        ToolKind kind;
+        QString text;
+        Qt::Key key;
+        QString tip;
+    };
+    const ToolEntry entries[] = {
+        {ToolKind::Select, tr("Select"), Qt::Key_S, tr("Select, move (drag) and nudge (arrow keys); Ctrl+drag turns")},
+        {ToolKind::Rotate, tr("Rotate"), Qt::Key_T, tr("Drag to turn a body or the selection about its centre")},
+        {ToolKind::Polygon, tr("Polygon"), Qt::Key_P,
+         tr("Click the corners; click the first one, press Enter or double-click to close")},
+        {ToolKind::Box, tr("Box"), Qt::Key_B, tr("Drag from corner to corner")},
+        {ToolKind::Circle, tr("Circle"), Qt::Key_C, tr("Drag from the centre out")},
+        {ToolKind::Ellipse, tr("Ellipse"), Qt::Key_E, tr("Drag out its bounding box")},
+        {ToolKind::Spring, tr("Spring"), Qt::Key_K, tr("Drag from a body to another body or to a point")},
+        {ToolKind::Pin, tr("Pin"), Qt::Key_N, tr("Click on a body to hinge it to the body below or the world")},
+        {ToolKind::Rod, tr("Rod"), Qt::Key_L, tr("Drag from a body to another body or to a point")},
+    };
+    m_toolGroup = new QActionGroup(this);
+    m_toolGroup->setExclusive(true);
+    for (const ToolEntry& entry : entries) {
+        auto* action = new QAction(entry.text, m_toolGroup);
+        action->setCheckable(true);
+        action->setShortcut(QKeySequence(entry.key));
+        action->setToolTip(tr("%1 (%2): %3").arg(entry.text, QKeySequence(entry.key).toString(QKeySequence::NativeText),
+                                                 entry.tip));
+        action->setStatusTip(entry.tip);
+        const ToolKind kind = entry.kind;
+        connect(action, &QAction::triggered, this, [this, kind] { m_canvas->setTool(kind); });
+        m_toolActions[kind] = action;
+        addAction(action);
+    }
+    m_toolActions.at(ToolKind::Select)->setChecked(true);
+    connect(m_canvas, &CanvasView::toolChanged, this, [this](ToolKind kind) { m_toolActions.at(kind)->setChecked(true); });
 }
 
 void MainWindow::createMenus()
 {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
+    fileMenu->addAction(m_newAction);
     fileMenu->addAction(m_openAction);
+    m_recentMenu = fileMenu->addMenu(tr("Open &Recent"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+    fillRecentMenu();
+    fileMenu->addSeparator();
+    fileMenu->addAction(m_saveAction);
+    fileMenu->addAction(m_saveAsAction);
     fileMenu->addSeparator();
     fileMenu->addAction(m_quitAction);
+
+    QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+    editMenu->addAction(m_undoAction);
+    editMenu->addAction(m_redoAction);
+    editMenu->addSeparator();
+    editMenu->addAction(m_deleteAction);
+    editMenu->addAction(m_selectAllAction);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->addAction(m_snapAction);
+    viewMenu->addAction(m_frameAction);
+    viewMenu->setObjectName(QStringLiteral("viewMenu"));
+
+    QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
+    toolsMenu->addActions(m_toolGroup->actions());
 
     QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     simulationMenu->addAction(m_playAction);
     simulationMenu->addAction(m_stepAction);
+    simulationMenu->addAction(m_resetAction);
+
+    m_examplesMenu = menuBar()->addMenu(tr("E&xamples"));
+    for (const ExampleScene& example : exampleScenes()) {
+        QAction* action = m_examplesMenu->addAction(example.title);
+        const QString path = example.path;
+        const QString title = example.title;
+        connect(action, &QAction::triggered, this, [this, path, title] { openExample(path, title); });
+    }
 }
 
-void MainWindow::createToolBar()
+void MainWindow::createToolBars()
 {
-    QToolBar* toolBar = addToolBar(tr("Run controls"));
-    toolBar->setObjectName(QStringLiteral("runControls"));
-    toolBar->setAccessibleName(tr("Run controls"));
-    toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    toolBar->setMovable(false);
-    toolBar->addAction(m_playAction);
-    toolBar->addAction(m_stepAction);
-    if (QWidget* button = toolBar->widgetForAction(m_playAction))
+    QToolBar* runBar = addToolBar(tr("Run controls"));
+    runBar->setObjectName(QStringLiteral("runControls"));
+    runBar->setAccessibleName(tr("Run controls"));
+    runBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    runBar->addAction(m_playAction);
+    runBar->addAction(m_stepAction);
+    runBar->addAction(m_resetAction);
+    if (QWidget* button = runBar->widgetForAction(m_playAction))
         button->setAccessibleName(tr("Play or pause"));
-    if (QWidget* button = toolBar->widgetForAction(m_stepAction))
+    if (QWidget* button = runBar->widgetForAction(m_stepAction))
         button->setAccessibleName(tr("Step once"));
+    if (QWidget* button = runBar->widgetForAction(m_resetAction))
+        button->setAccessibleName(tr("Reset to the last Play"));
+
+    auto* speedLabel = new QLabel(tr("Speed:"), runBar);
+    speedLabel->setAccessibleName(tr("Speed"));
+    speedLabel->setContentsMargins(kStatusLabelPaddingPx, 0, kStatusLabelPaddingPx / 2, 0);
+    runBar->addWidget(speedLabel);
+    m_speedBox = new QComboBox(runBar);
+    m_speedBox->setAccessibleName(tr("Simulation speed"));
+    m_speedBox->setToolTip(tr("Simulated seconds per real second"));
+    m_speedBox->setFocusPolicy(Qt::ClickFocus);
+    for (const double speed : kSpeeds)
+        m_speedBox->addItem(tr("%1×").arg(speed), speed);
+    m_speedBox->setCurrentIndex(kRealTimeSpeedIndex);
+    speedLabel->setBuddy(m_speedBox);
+    connect(m_speedBox, &QComboBox::currentIndexChanged, this,
+            [this](int index) { m_document->runner().setSpeed(m_speedBox->itemData(index).toDouble()); });
+    // Back to the canvas once a speed is chosen, so that Space plays again instead of opening
+    // the list.
+    connect(m_speedBox, &QComboBox::activated, m_canvas, [this] { m_canvas->setFocus(); });
+    runBar->addWidget(m_speedBox);
+
+    QToolBar* toolBar = new QToolBar(tr("Tools"), this);
+    toolBar->setObjectName(QStringLiteral("drawingTools"));
+    toolBar->setAccessibleName(tr("Drawing tools"));
+    toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    toolBar->addActions(m_toolGroup->actions());
+    for (QAction* action : m_toolGroup->actions()) {
+        if (QWidget* button = toolBar->widgetForAction(action))
+            button->setAccessibleName(tr("%1 tool").arg(action->text()));
+    }
+    addToolBar(Qt::LeftToolBarArea, toolBar);
+}
+
+void MainWindow::createDock()
+{
+    m_attributesDock = new QDockWidget(tr("Attributes"), this);
+    m_attributesDock->setObjectName(QStringLiteral("attributesDock"));
+    m_attributesDock->setAccessibleName(tr("Attributes"));
+    m_attributesDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    auto* placeholder = new QLabel(tr("Select a body, spring or joint to see its attributes."), m_attributesDock);
+    placeholder->setWordWrap(true);
+    placeholder->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    placeholder->setAccessibleName(tr("Attributes"));
+    m_attributesDock->setWidget(placeholder);
+    addDockWidget(Qt::RightDockWidgetArea, m_attributesDock);
+    QMenu* viewMenu = findChild<QMenu*>(QStringLiteral("viewMenu"));
+    if (viewMenu) {
+        viewMenu->addSeparator();
+        viewMenu->addAction(m_attributesDock->toggleViewAction());
+    }
 }
 
 void MainWindow::createStatusBar()
 {
     m_timeLabel = new QLabel(this);
     m_timeLabel->setAccessibleName(tr("Simulated time"));
+    m_energyPartsLabel = new QLabel(this);
+    m_energyPartsLabel->setAccessibleName(tr("Kinetic, potential and elastic energy"));
+    m_energyPartsLabel->setToolTip(
+        tr("Kinetic energy K, gravitational potential energy U (from y = 0) and elastic energy of the springs"));
     m_energyLabel = new QLabel(this);
     m_energyLabel->setAccessibleName(tr("Total energy"));
+    m_momentumLabel = new QLabel(this);
+    m_momentumLabel->setAccessibleName(tr("Total momentum"));
     m_collisionLabel = new QLabel(this);
     m_collisionLabel->setAccessibleName(tr("Collision count"));
-    for (QLabel* label : {m_timeLabel, m_energyLabel, m_collisionLabel})
+    for (QLabel* label : {m_timeLabel, m_energyPartsLabel, m_energyLabel, m_momentumLabel, m_collisionLabel}) {
         label->setContentsMargins(kStatusLabelPaddingPx, 0, kStatusLabelPaddingPx, 0);
-    statusBar()->addPermanentWidget(m_timeLabel);
-    statusBar()->addPermanentWidget(m_energyLabel);
-    statusBar()->addPermanentWidget(m_collisionLabel);
+        statusBar()->addPermanentWidget(label);
+    }
     statusBar()->setAccessibleName(tr("Status"));
 }
 
@@ -127,15 +357,25 @@ QStringList MainWindow::openScene(const QString& path)
     model::SceneLoadResult result = loadScene(path);
     if (!result.ok())
         return problemMessages(result);
-    setScene(std::move(*result.world), sceneDisplayName(path));
+    // A resource (an example) has no file to save back to.
+    const QString file = path.startsWith(QLatin1Char(':')) ? QString() : QFileInfo(path).absoluteFilePath();
+    m_document->setScene(std::move(*result.world), file, sceneDisplayName(path));
+    if (!file.isEmpty())
+        addRecentFile(file);
     return {};
 }
 
 void MainWindow::setScene(model::World world, const QString& name)
 {
-    m_sceneName = name;
-    m_runner->setWorld(std::move(world));
-    updateTitle();
+    m_document->setScene(std::move(world), QString(), name);
+}
+
+bool MainWindow::newScene()
+{
+    if (!maybeDiscardChanges())
+        return false;
+    m_document->setScene(model::World{}, QString(), tr("untitled"));
+    return true;
 }
 
 void MainWindow::openSceneDialog()
@@ -150,13 +390,39 @@ void MainWindow::openSceneDialog()
 
 bool MainWindow::openSceneInteractively(const QString& path)
 {
-    const QStringList problems = openScene(path);
-    if (problems.isEmpty())
-        return true;
+    // Load first: a file that fails changes nothing, so there is nothing to ask about.
+    model::SceneLoadResult result = loadScene(path);
+    if (!result.ok()) {
+        showProblems(path, problemMessages(result));
+        return false;
+    }
+    if (!maybeDiscardChanges())
+        return false;
+    const QString file = path.startsWith(QLatin1Char(':')) ? QString() : QFileInfo(path).absoluteFilePath();
+    m_document->setScene(std::move(*result.world), file, sceneDisplayName(path));
+    if (!file.isEmpty())
+        addRecentFile(file);
+    return true;
+}
+
+void MainWindow::openExample(const QString& path, const QString& title)
+{
+    model::SceneLoadResult result = loadScene(path);
+    if (!result.ok()) {
+        showProblems(path, problemMessages(result));
+        return;
+    }
+    if (!maybeDiscardChanges())
+        return;
+    m_document->setScene(std::move(*result.world), QString(), title);
+}
+
+void MainWindow::showProblems(const QString& path, const QStringList& problems)
+{
     QMessageBox box(QMessageBox::Warning, tr("Cannot open scene"),
-                    tr("“%1” could not be opened. The current scene is unchanged.")
-                        .arg(QFileInfo(path).fileName()),
+                    tr("“%1” could not be opened. The current scene is unchanged.").arg(QFileInfo(path).fileName()),
                     QMessageBox::Ok, this);
+    box.setObjectName(QStringLiteral("openErrorBox"));
     QStringList shown = problems.mid(0, kProblemsShown);
     if (problems.size() > kProblemsShown) {
         shown << tr("…and %n more.", nullptr, static_cast<int>(problems.size() - kProblemsShown));
@@ -164,7 +430,100 @@ bool MainWindow::openSceneInteractively(const QString& path)
     }
     box.setInformativeText(shown.join(QLatin1Char('\n')));
     box.exec();
-    return false;
+}
+
+bool MainWindow::saveTo(const QString& path)
+{
+    if (const std::optional<QString> error = m_document->saveAs(path)) {
+        QMessageBox box(QMessageBox::Warning, tr("Cannot save scene"),
+                        tr("The scene could not be saved to “%1”. Nothing was overwritten.").arg(path), QMessageBox::Ok,
+                        this);
+        box.setObjectName(QStringLiteral("saveErrorBox"));
+        box.setInformativeText(*error);
+        box.exec();
+        return false;
+    }
+    addRecentFile(m_document->filePath());
+    return true;
+}
+
+bool MainWindow::save()
+{
+    if (m_document->filePath().isEmpty())
+        return saveAsDialog();
+    return saveTo(m_document->filePath());
+}
+
+bool MainWindow::saveAsDialog()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), m_lastDirectory,
+                                                tr("Impetus scenes (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    m_lastDirectory = QFileInfo(path).absolutePath();
+    return saveTo(path);
+}
+
+bool MainWindow::maybeDiscardChanges()
+{
+    if (!m_document->hasUnsavedEdits())
+        return true;
+    QMessageBox box(QMessageBox::Question, tr("Unsaved changes"),
+                    tr("“%1” has changes that are not saved.").arg(m_document->displayName()),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setObjectName(QStringLiteral("unsavedChangesBox"));
+    box.setInformativeText(tr("Save them before going on?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save:
+        return save();
+    case QMessageBox::Discard:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeDiscardChanges()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kWindowStateKey, saveState());
+    settings.setValue(kSnapKey, m_snapAction->isChecked());
+    m_document->runner().pause();
+    event->accept();
+}
+
+QStringList MainWindow::recentFiles() const { return QSettings().value(kRecentFilesKey).toStringList(); }
+
+void MainWindow::addRecentFile(const QString& path)
+{
+    QStringList files = recentFiles();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    QSettings().setValue(kRecentFilesKey, files);
+    fillRecentMenu();
+}
+
+void MainWindow::fillRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = recentFiles();
+    for (const QString& file : files) {
+        QAction* action = m_recentMenu->addAction(QFileInfo(file).fileName());
+        action->setToolTip(file);
+        action->setStatusTip(file);
+        connect(action, &QAction::triggered, this, [this, file] { openSceneInteractively(file); });
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::onRunningChanged(bool running)
@@ -180,16 +539,24 @@ void MainWindow::onRunningChanged(bool running)
 
 void MainWindow::updateStatus()
 {
-    const model::World& world = m_runner->world();
+    const model::World& world = m_document->world();
     m_timeLabel->setText(tr("t = %1 s").arg(world.time, 0, 'f', 3));
-    const double energy = controller::computeEnergy(world).total();
-    m_energyLabel->setText(tr("E = %1 J").arg(energy, 0, 'f', 3));
+    const controller::Energy energy = controller::computeEnergy(world);
+    m_energyPartsLabel->setText(tr("K = %1 J  U = %2 J  elastic = %3 J")
+                                    .arg(energy.kinetic, 0, 'f', 3)
+                                    .arg(energy.potential, 0, 'f', 3)
+                                    .arg(energy.elastic, 0, 'f', 3));
+    m_energyLabel->setText(tr("E = %1 J").arg(energy.total(), 0, 'f', 3));
+    const Vec2 momentum = controller::linearMomentum(world);
+    m_momentumLabel->setText(tr("p = (%1, %2) kg·m/s").arg(momentum.x(), 0, 'f', 3).arg(momentum.y(), 0, 'f', 3));
     m_collisionLabel->setText(tr("Collisions: %1").arg(world.collisionCount));
 }
 
 void MainWindow::updateTitle()
 {
-    setWindowTitle(m_sceneName.isEmpty() ? tr("Impetus") : tr("Impetus — %1").arg(m_sceneName));
+    const QString name = m_document->displayName().isEmpty() ? tr("untitled") : m_document->displayName();
+    setWindowTitle(tr("%1[*] — Impetus").arg(name));
+    setWindowModified(m_document->isModified());
 }
 
 } // namespace impetus::view

@@ -1,24 +1,40 @@
 #pragma once
 /// \file main_window.h
-/// The main window: the canvas, the run controls and the status bar.
+/// The main window: the canvas, the tools, the run controls, the menus, the readouts and the
+/// attributes dock.
 
 #include "model/world.h"
+#include "view/tools/tool.h"
 
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
 
+#include <map>
+
 class QAction;
+class QActionGroup;
+class QComboBox;
+class QDockWidget;
 class QLabel;
+class QMenu;
 
 namespace impetus::view {
 
 class CanvasView;
+class SceneDocument;
 class SimulationRunner;
 
-/// The application window. The canvas is the central widget; a tool bar holds Play/Pause (Space)
-/// and Step (→); the status bar shows the simulated time and the total energy. File > Open…
-/// replaces the scene, File > Quit closes the window. The title is "Impetus — <scene name>".
+/// The application window. The canvas is the central widget; a tool bar on the left holds the
+/// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed); the
+/// status bar shows the simulated time, the energies, the momentum and the collision count. The
+/// attributes dock (object name "attributesDock") sits on the right. Menus: File (New, Open, Open
+/// Recent, Save, Save As, Quit), Edit (Undo, Redo, Delete, Select All), View, Tools, Simulation
+/// and Examples. The title is "<scene name>[*] — Impetus", with the marker while modified.
+///
+/// Before discarding edits that are not saved (New, Open, an example, closing) the window asks
+/// with a QMessageBox whose object name is "unsavedChangesBox". The dock layout and the window
+/// geometry are kept in QSettings.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -27,54 +43,121 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
 
     /// Loads the scene at `path` (a file, or a Qt resource path such as kDefaultScenePath) and
-    /// shows it, paused. On failure the current scene stays untouched and the problems are
-    /// returned, one "path: reason" line each; nothing is shown to the user.
+    /// shows it, paused, without asking about unsaved work. On failure the current scene stays
+    /// untouched and the problems are returned, one "path: reason" line each; nothing is shown.
     QStringList openScene(const QString& path);
 
-    /// openScene(), telling the user: a file that fails to load shows its problems in a modal
-    /// message box, and the current scene stays. What File > Open… does with the chosen file.
+    /// What File > Open… does with the chosen file: loads it; a file that fails to load shows its
+    /// problems in a modal message box (object name "openErrorBox") and the current scene stays.
+    /// A file that loads replaces the scene once the user agreed to discard unsaved edits.
     /// Returns true when the scene was opened.
     bool openSceneInteractively(const QString& path);
 
-    /// Shows `world` (paused) under the name `name`.
+    /// Shows `world` (paused) under the name `name`, with no file.
     void setScene(model::World world, const QString& name);
 
-    /// The name of the scene shown (the title says "Impetus — <name>").
-    QString sceneName() const { return m_sceneName; }
+    /// File > New: an empty scene, after asking about unsaved edits. True when done.
+    bool newScene();
+
+    /// Saves to `path` and makes it the scene's file; a failure shows a message box (object name
+    /// "saveErrorBox"). True when saved.
+    bool saveTo(const QString& path);
+
+    /// File > Save: saves to the scene's file, or asks for one (Save As) when it has none.
+    bool save();
+
+    /// Asks whether to save unsaved edits (Save, Discard, Cancel) if there are any. True when the
+    /// caller may go on and discard the scene.
+    bool maybeDiscardChanges();
+
+    /// The name of the scene shown (the title says "<name>[*] — Impetus").
+    QString sceneName() const;
+
+    /// The scene document: world, selection, undo stack, file.
+    SceneDocument& document() { return *m_document; }
 
     /// The runner that owns and steps the world.
-    SimulationRunner& runner() { return *m_runner; }
-    const SimulationRunner& runner() const { return *m_runner; }
+    SimulationRunner& runner();
+    const SimulationRunner& runner() const;
 
     /// The central canvas.
     CanvasView& canvas() { return *m_canvas; }
 
+    /// The right-hand dock for the attribute pane; its widget is a placeholder until replaced.
+    QDockWidget* attributesDock() const { return m_attributesDock; }
+
+    /// The files opened or saved last, most recent first (kept in QSettings).
+    QStringList recentFiles() const;
+
     /// The Play/Pause action (checkable, Space).
     QAction* playAction() const { return m_playAction; }
-
     /// The Step action (→).
     QAction* stepAction() const { return m_stepAction; }
+    /// The Reset action (R): back to the world at the last Play.
+    QAction* resetAction() const { return m_resetAction; }
+    /// Edit > Undo (Ctrl+Z), named after the command it undoes.
+    QAction* undoAction() const { return m_undoAction; }
+    /// Edit > Redo (Ctrl+Shift+Z), named after the command it redoes.
+    QAction* redoAction() const { return m_redoAction; }
+    /// Edit > Delete (Del).
+    QAction* deleteAction() const { return m_deleteAction; }
+    /// View > Snap to Grid (checkable).
+    QAction* snapAction() const { return m_snapAction; }
+    /// The action that makes `kind` the current tool.
+    QAction* toolAction(ToolKind kind) const { return m_toolActions.at(kind); }
+    /// The speed chooser of the run controls (0.1× … 4×).
+    QComboBox* speedBox() const { return m_speedBox; }
+    /// The Examples menu.
+    QMenu* examplesMenu() const { return m_examplesMenu; }
+
+protected:
+    /// Asks about unsaved edits, then keeps the dock layout in QSettings.
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void createActions();
+    void createToolActions();
     void createMenus();
-    void createToolBar();
+    void createToolBars();
+    void createDock();
     void createStatusBar();
     void openSceneDialog();
+    bool saveAsDialog();
+    void openExample(const QString& path, const QString& title);
+    void addRecentFile(const QString& path);
+    void fillRecentMenu();
     void onRunningChanged(bool running);
     void updateStatus();
     void updateTitle();
+    void showProblems(const QString& path, const QStringList& problems);
 
-    SimulationRunner* m_runner;
+    SceneDocument* m_document;
     CanvasView* m_canvas;
-    QString m_sceneName;
+    QDockWidget* m_attributesDock = nullptr;
     QString m_lastDirectory;
+    QAction* m_newAction = nullptr;
     QAction* m_openAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_saveAsAction = nullptr;
     QAction* m_quitAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QAction* m_deleteAction = nullptr;
+    QAction* m_selectAllAction = nullptr;
+    QAction* m_snapAction = nullptr;
+    QAction* m_frameAction = nullptr;
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QActionGroup* m_toolGroup = nullptr;
+    std::map<ToolKind, QAction*> m_toolActions;
+    QComboBox* m_speedBox = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_examplesMenu = nullptr;
     QLabel* m_timeLabel = nullptr;
     QLabel* m_energyLabel = nullptr;
+    QLabel* m_energyPartsLabel = nullptr;
+    QLabel* m_momentumLabel = nullptr;
     QLabel* m_collisionLabel = nullptr;
 };
 

@@ -24,6 +24,13 @@ void SimulationRunner::setWorld(model::World world)
     m_worldAtLastPlay.reset();
     m_accumulator = 0;
     emit worldChanged();
+    emit sceneReplaced();
+}
+
+void SimulationRunner::editWorld(const std::function<void(model::World&)>& edit)
+{
+    edit(m_world);
+    emit worldChanged();
 }
 
 void SimulationRunner::setSpeed(double speed)

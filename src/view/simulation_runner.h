@@ -11,6 +11,7 @@
 #include <QTimer>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 namespace impetus::view {
@@ -33,8 +34,13 @@ public:
     const model::World& world() const { return m_world; }
 
     /// Replaces the world (pausing first) and forgets the world saved at the last play().
-    /// Emits worldChanged().
+    /// Emits worldChanged(), then sceneReplaced().
     void setWorld(model::World world);
+
+    /// Changes the world in place by calling `edit` on it: an edit from the editor. A running
+    /// simulation keeps running (the next step starts from the edited world), and the world saved
+    /// at the last play() stays. Emits worldChanged().
+    void editWorld(const std::function<void(model::World&)>& edit);
 
     /// True while the timer runs the simulation.
     bool isRunning() const { return m_timer.isActive(); }
@@ -80,8 +86,12 @@ public slots:
     void resetToLastPlay();
 
 signals:
-    /// The world was replaced (a new scene, a reset): bodies may have been added or removed.
+    /// The world was replaced or edited (a new scene, a reset, an edit): bodies may have been
+    /// added or removed.
     void worldChanged();
+
+    /// setWorld() put in a different scene (after its worldChanged()): a canvas frames it anew.
+    void sceneReplaced();
 
     /// The world advanced by one or more fixed steps; the bodies are the same.
     void stepped();

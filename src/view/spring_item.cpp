@@ -45,6 +45,16 @@ void SpringItem::setEnds(const QPointF& a, const QPointF& b)
     m_path.lineTo(b);
 }
 
+void SpringItem::setHighlighted(bool on)
+{
+    if (on == m_highlighted)
+        return;
+    m_highlighted = on;
+    m_pen.setColor(on ? constants::kSelectionColor : constants::kSpringColor);
+    m_pen.setWidthF(on ? constants::kSelectionWidthPx : constants::kOutlineWidthPx);
+    update();
+}
+
 QRectF SpringItem::boundingRect() const
 {
     return m_path.boundingRect().adjusted(-m_halfWidth, -m_halfWidth, m_halfWidth, m_halfWidth);

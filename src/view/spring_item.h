@@ -22,6 +22,12 @@ public:
     /// Moves the spring's ends to the scene points `a` and `b`, m.
     void setEnds(const QPointF& a, const QPointF& b);
 
+    /// Draws the spring in the selection colour while `on`.
+    void setHighlighted(bool on);
+
+    /// Whether the spring is drawn as selected.
+    bool isHighlighted() const { return m_highlighted; }
+
     /// The zig-zag's bounding box in scene coordinates, m.
     QRectF boundingRect() const override;
     /// The zig-zag, with a cosmetic pen.
@@ -33,6 +39,7 @@ private:
     double m_halfWidth; ///< m
     QPainterPath m_path;
     QPen m_pen;
+    bool m_highlighted = false;
 };
 
 /// A small ring-and-dot marker at a fixed world point (a spring's world anchor). It ignores the

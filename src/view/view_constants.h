@@ -76,11 +76,73 @@ inline constexpr double kSpringLeadFraction = 0.1;
 /// Radius of the marker drawn at a spring's fixed world anchor, px.
 inline constexpr double kAnchorMarkerRadiusPx = 4.0;
 
+/// Most commands the undo stack keeps. A run keeps two copies of the world, so a long session with
+/// a large scene must not keep every one; 200 is far more undo than a lesson needs.
+inline constexpr int kUndoLimit = 200;
+
+/// Each notch of the mouse wheel zooms by this factor (toward the cursor): 1.2 takes about a dozen
+/// notches to go from a whole classroom scene to a single body, without jumps that lose the place.
+inline constexpr double kZoomPerWheelNotch = 1.2;
+
+/// Limits of the zoom, px per metre: from 0.01 px/m (a 100 km field on a screen) to 10⁶ px/m
+/// (a micrometre a pixel), far beyond any classroom scene either way, before the scroll bars'
+/// integer range or floating point would show.
+inline constexpr double kMinPixelsPerMetre = 0.01;
+inline constexpr double kMaxPixelsPerMetre = 1e6;
+
+/// Grid labels: the point size of their font, their distance from the edge and the line, px.
+inline constexpr double kGridLabelPointSize = 7.5;
+inline constexpr double kGridLabelPaddingPx = 3.0;
+
+/// How near the cursor must be to a spring or joint to pick it, px: a thin line needs a margin a
+/// hand can hit.
+inline constexpr double kPickTolerancePx = 6.0;
+
+/// Polygon tool: a click this close to the first vertex closes the polygon, px.
+inline constexpr double kCloseToFirstVertexPx = 8.0;
+
+/// Drag tools: a drag shorter than this is a click and draws nothing, px (a shaky click is not a
+/// 1 mm box).
+inline constexpr double kMinimumDragPx = 4.0;
+
+/// Arrow keys move the selection by this many grid spacings (Shift: kNudgeLargeFactor times more),
+/// so a nudge is the same on screen at every zoom.
+inline constexpr double kNudgeGridFraction = 0.1;
+inline constexpr double kNudgeLargeFactor = 10.0;
+
+/// Rotate tool: with Shift held the angle snaps to multiples of this, degrees.
+inline constexpr double kRotationSnapDegrees = 15.0;
+
+/// Radius of a pin joint's marker, px.
+inline constexpr double kPinMarkerRadiusPx = 5.0;
+
+/// Width of a rod joint's line, px.
+inline constexpr double kRodWidthPx = 3.0;
+
+/// Radius of the dot in a pin's ring, as a fraction of the ring's radius.
+inline constexpr double kPinDotFraction = 0.4;
+
+/// Opacity of the fill of a shape being drawn and of the rubber band: enough to see the area, light
+/// enough to see the bodies under it.
+inline constexpr float kPreviewFillAlpha = 0.12f;
+inline constexpr float kRubberBandFillAlpha = 0.08f;
+
+/// Width of the selection outline drawn over selected items, px.
+inline constexpr double kSelectionWidthPx = 2.5;
+
 /// Canvas colours: a near-white paper, light grey grid lines, and slightly darker axes.
 inline const QColor kBackgroundColor{0xfa, 0xfa, 0xf9};
 inline const QColor kMinorGridColor{0xe7, 0xe5, 0xe4};
 inline const QColor kMajorGridColor{0xd6, 0xd3, 0xd1};
 inline const QColor kAxisColor{0xa8, 0xa2, 0x9e};
 inline const QColor kSpringColor{0x44, 0x40, 0x3c};
+/// Joints (pins and rods): a dark slate, apart from the springs' warm grey.
+inline const QColor kJointColor{0x33, 0x41, 0x55};
+/// Grid labels: the axis grey, dark enough to read on the paper.
+inline const QColor kGridLabelColor{0x78, 0x71, 0x6c};
+/// The selection outline, and the tools' drawing previews: an amber that no body colour or the
+/// collision red is confused with.
+inline const QColor kSelectionColor{0xf5, 0x9e, 0x0b};
+inline const QColor kPreviewColor{0x25, 0x63, 0xeb};
 
 } // namespace impetus::view::constants

@@ -23,6 +23,7 @@ private slots:
     void stepOncePausesAndTakesOneStep();
     void playRunsInRealTimeAndPauseStops();
     void resetGoesBackToLastPlay();
+    void editWorldKeepsRunningAndTheWorldAtPlay();
 };
 
 void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
@@ -151,6 +152,31 @@ void SimulationRunnerTest::resetGoesBackToLastPlay()
     runner.resetToLastPlay();
     QCOMPARE(changed.count(), 1);
     QVERIFY(runner.world() == atPlay);
+}
+
+void SimulationRunnerTest::editWorldKeepsRunningAndTheWorldAtPlay()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::risingBallWorld());
+    QSignalSpy replaced(&runner, &SimulationRunner::sceneReplaced);
+    QSignalSpy changed(&runner, &SimulationRunner::worldChanged);
+    runner.play();
+    const model::World atPlay = runner.world();
+    runner.advanceWallTime(0.05);
+
+    runner.editWorld([](model::World& world) { world.bodies[0].state.velocity = impetus::Vec2(2, 0); });
+    QVERIFY(runner.isRunning());
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(replaced.count(), 0); // an edit is not a new scene: views do not reframe
+    QVERIFY(runner.worldAtLastPlay() && *runner.worldAtLastPlay() == atPlay);
+    // The next steps start from the edited world: the ball now moves along x.
+    const double x = runner.world().bodies[0].state.position.x();
+    runner.advanceWallTime(0.05);
+    QVERIFY(runner.world().bodies[0].state.position.x() > x);
+    runner.pause();
+
+    runner.setWorld(test::risingBallWorld());
+    QCOMPARE(replaced.count(), 1);
 }
 
 QTEST_MAIN(SimulationRunnerTest)

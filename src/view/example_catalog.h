@@ -1,0 +1,25 @@
+#pragma once
+/// \file example_catalog.h
+/// The example scenes embedded in the application, with the titles the Examples menu shows.
+
+#include <QString>
+
+#include <vector>
+
+namespace impetus::view {
+
+/// One example scene: its resource path and its title.
+struct ExampleScene {
+    QString path; ///< ":/examples/<name>.json"
+    QString title; ///< "Newton's cradle"
+};
+
+/// Every scene file under ":/examples/", sorted by file name.
+std::vector<ExampleScene> exampleScenes();
+
+/// The title of the example file called `baseName` (no folder or extension): a translated title
+/// for the known examples ("newtons-cradle" → "Newton's cradle"), otherwise the name with dashes
+/// and underscores as spaces and a capital first letter ("box-stack" → "Box stack").
+QString exampleTitle(const QString& baseName);
+
+} // namespace impetus::view
