@@ -3,6 +3,7 @@
 #include "controller/diagnostics.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
+#include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
@@ -318,11 +319,20 @@ void MainWindow::createDock()
     m_attributesDock->setObjectName(QStringLiteral("attributesDock"));
     m_attributesDock->setAccessibleName(tr("Attributes"));
     m_attributesDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
-    auto* placeholder = new QLabel(tr("Select a body, spring or joint to see its attributes."), m_attributesDock);
-    placeholder->setWordWrap(true);
-    placeholder->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    placeholder->setAccessibleName(tr("Attributes"));
-    m_attributesDock->setWidget(placeholder);
+    // The pane shows the selection (or the world settings) and turns each edit into one undoable
+    // command on the document; it follows every change, and the live values follow each step.
+    m_pane = new PropertyPane(m_attributesDock);
+    m_pane->setObjectName(QStringLiteral("propertyPane"));
+    m_attributesDock->setWidget(m_pane);
+    connect(m_pane, &PropertyPane::bodyEdited, m_document, &SceneDocument::setBody);
+    connect(m_pane, &PropertyPane::springEdited, m_document, &SceneDocument::setSpring);
+    connect(m_pane, &PropertyPane::jointEdited, m_document, &SceneDocument::setJoint);
+    connect(m_pane, &PropertyPane::worldSettingsEdited, m_document, &SceneDocument::setWorldSettings);
+    const auto showSelection = [this] { m_pane->showSelection(m_document->world(), m_document->selection()); };
+    connect(m_document, &SceneDocument::selectionChanged, this, showSelection);
+    connect(m_document, &SceneDocument::worldChanged, this, showSelection);
+    connect(m_document, &SceneDocument::stepped, this, [this] { m_pane->refresh(m_document->world()); });
+    showSelection();
     addDockWidget(Qt::RightDockWidgetArea, m_attributesDock);
     QMenu* viewMenu = findChild<QMenu*>(QStringLiteral("viewMenu"));
     if (viewMenu) {

@@ -22,6 +22,7 @@ class QMenu;
 namespace impetus::view {
 
 class CanvasView;
+class PropertyPane;
 class SceneDocument;
 class SimulationRunner;
 
@@ -85,6 +86,8 @@ public:
 
     /// The right-hand dock for the attribute pane; its widget is a placeholder until replaced.
     QDockWidget* attributesDock() const { return m_attributesDock; }
+    /// The attribute pane inside attributesDock().
+    PropertyPane* propertyPane() const { return m_pane; }
 
     /// The files opened or saved last, most recent first (kept in QSettings).
     QStringList recentFiles() const;
@@ -134,6 +137,7 @@ private:
     SceneDocument* m_document;
     CanvasView* m_canvas;
     QDockWidget* m_attributesDock = nullptr;
+    PropertyPane* m_pane = nullptr; ///< the attributes dock's widget
     QString m_lastDirectory;
     QAction* m_newAction = nullptr;
     QAction* m_openAction = nullptr;

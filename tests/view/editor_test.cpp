@@ -9,6 +9,7 @@
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
 #include "view/main_window.h"
+#include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/screenshot.h"
@@ -27,6 +28,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QLineEdit>
 #include <QTest>
 #include <QTimer>
 #include <QToolTip>
@@ -131,6 +133,7 @@ private slots:
     void invalidPolygonIsRefusedAndStaysOpen();
     void dragOutBoxOfThatSizeAtThatPlace();
     void dragOutCircleAndEllipse();
+    void dragOutBoxThenTypeRestitutionInThePane();
     void undoRestoresAndRedoReappliesWithKeys();
     void deleteKeyRemovesSelection();
     void selectClickRubberBandAndMove();
@@ -316,6 +319,50 @@ void EditorTest::dragOutBoxOfThatSizeAtThatPlace()
     QCOMPARE(m_window->runner().world().bodies[1].name, std::string("box 2"));
     QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, QPoint(700, 200));
     QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(2));
+}
+
+void EditorTest::dragOutBoxThenTypeRestitutionInThePane()
+{
+    CanvasView& canvas = m_window->canvas();
+    QTest::keyClick(&canvas, Qt::Key_B);
+    const QPoint from(250, 420), to(430, 300);
+    drag(canvas.viewport(), from, to);
+    QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(1));
+
+    // Pick it with the select tool: the pane shows the box.
+    QTest::keyClick(&canvas, Qt::Key_S);
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, (from + to) / 2);
+    QCOMPARE(m_window->document().selection().bodies, std::vector<int>{0});
+    auto* restitution = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("restitution"));
+    QVERIFY(restitution);
+    QVERIFY(restitution->isVisible());
+    QCOMPARE(restitution->text().toDouble(), 0.5);
+
+    // Type a new value and press Enter, as a user would: the model changes, and nothing else.
+    const model::Body before = m_window->runner().world().bodies[0];
+    QTest::mouseDClick(restitution, Qt::LeftButton);
+    restitution->selectAll();
+    QTest::keyClicks(restitution, QStringLiteral("0.8"));
+    QTest::keyClick(restitution, Qt::Key_Return);
+    const model::Body& after = m_window->runner().world().bodies[0];
+    QCOMPARE(after.material.restitution, 0.8);
+    model::Body expected = before;
+    expected.material.restitution = 0.8;
+    QCOMPARE(after, expected);
+    QVERIFY(m_window->document().undoStack()->undoText().contains(QStringLiteral("estitution")));
+
+    // A bad value is refused with a message and changes nothing.
+    restitution->selectAll();
+    QTest::keyClicks(restitution, QStringLiteral("1.5"));
+    QTest::keyClick(restitution, Qt::Key_Return);
+    QCOMPARE(m_window->runner().world().bodies[0].material.restitution, 0.8);
+    QVERIFY(!m_window->propertyPane()->message().isEmpty());
+
+    // Undo from the canvas puts the old value back in the model and in the pane.
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->runner().world().bodies[0].material.restitution, 0.5);
+    QCOMPARE(restitution->text().toDouble(), 0.5);
 }
 
 void EditorTest::dragOutCircleAndEllipse()
