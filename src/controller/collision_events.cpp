@@ -50,14 +50,14 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         touching[ci] = isTouching(c);
         if (!touching[ci])
             continue;
-        world.bodies[c.bodyA].colliding = true;
-        world.bodies[c.bodyB].colliding = true;
+        world.bodies[c.ownerA].colliding = true;
+        world.bodies[c.ownerB].colliding = true;
 
-        const BodyPair pair(c.bodyA, c.bodyB);
+        const BodyPair pair(c.ownerA, c.ownerB);
         if (std::binary_search(before.begin(), before.end(), pair))
             continue;
-        // A pair of bodies may touch through several pieces: the first touching one opens the
-        // event and the others add their impulse to it.
+        // A pair of bodies may touch through several pieces (a soft body through many ellipses):
+        // the first touching one opens the event and the others add their impulse to it.
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
         const ContactConstraintPoint& p = c.points[0];
@@ -67,7 +67,7 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
             impulse += q.normalImpulse + q.impactImpulse;
         }
         const auto open = std::find_if(events.begin(), events.end(), [&](const CollisionEvent& e) {
-            return e.bodyA.index == c.bodyA && e.bodyB.index == c.bodyB;
+            return e.bodyA.index == c.ownerA && e.bodyB.index == c.ownerB;
         });
         if (open != events.end()) {
             open->normalImpulse += impulse;
@@ -75,8 +75,8 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         }
         CollisionEvent e;
         e.time = world.time;
-        e.bodyA = model::BodyId{c.bodyA};
-        e.bodyB = model::BodyId{c.bodyB};
+        e.bodyA = model::BodyId{c.ownerA};
+        e.bodyB = model::BodyId{c.ownerB};
         e.point = p.point;
         e.normal = c.normal;
         e.normalImpulse = impulse;

@@ -103,10 +103,12 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
         c.pieceA = pm.pieceA;
         c.bodyB = pm.bodyB;
         c.pieceB = pm.pieceB;
+        c.ownerA = pm.ownerA;
+        c.ownerB = pm.ownerB;
         c.normal = pm.manifold.normal;
         c.pointCount = pm.manifold.count;
-        const model::Body& bodyA = world.bodies[c.bodyA];
-        const model::Body& bodyB = world.bodies[c.bodyB];
+        const model::Body& bodyA = world.bodies[c.ownerA];
+        const model::Body& bodyB = world.bodies[c.ownerB];
         c.friction = mixFriction(bodyA.material.friction, bodyB.material.friction);
         c.restitution = mixRestitution(bodyA.material.restitution, bodyB.material.restitution);
         const SolverBody& a = bodies[c.bodyA];
@@ -114,7 +116,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
         c.localNormalA = rotate(c.normal, -a.angle);
 
         // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together.
-        const PairKey want{c.bodyA, c.pieceA, c.bodyB, c.pieceB};
+        const PairKey want{c.ownerA, c.pieceA, c.ownerB, c.pieceB};
         while (cursor < previous.size() && keyOf(previous[cursor]) < want)
             ++cursor;
         const model::ContactRecord* match =
@@ -550,9 +552,9 @@ std::vector<model::ContactRecord> ContactSolver::records(const std::vector<bool>
     for (std::size_t ci = 0; ci < m_constraints.size(); ++ci) {
         const ContactConstraint& c = m_constraints[ci];
         model::ContactRecord r;
-        r.bodyA = model::BodyId{c.bodyA};
+        r.bodyA = model::BodyId{c.ownerA};
         r.pieceA = c.pieceA;
-        r.bodyB = model::BodyId{c.bodyB};
+        r.bodyB = model::BodyId{c.ownerB};
         r.pieceB = c.pieceB;
         r.pointCount = static_cast<std::uint8_t>(c.pointCount);
         for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {

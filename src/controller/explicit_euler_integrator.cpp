@@ -4,21 +4,20 @@ namespace impetus::controller {
 
 void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h)
 {
-    m_states.clear();
-    for (const model::Body& body : world.bodies)
-        m_states.push_back(body.state);
+    gatherStates(world, m_states);
     computeDerivatives(world, m_states, m_derivatives);
 
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
+    for (std::size_t i = 0; i < m_states.size(); ++i) {
+        model::BodyState& state = m_states[i];
         const BodyDerivative& d = m_derivatives[i];
         // Both updates use the derivative at the start of the step: this is what makes the method
         // explicit, and what makes it gain energy on oscillators.
-        body.state.position += h * d.velocity;
-        body.state.angle += h * d.angularVelocity;
-        body.state.velocity += h * d.acceleration;
-        body.state.angularVelocity += h * d.angularAcceleration;
+        state.position += h * d.velocity;
+        state.angle += h * d.angularVelocity;
+        state.velocity += h * d.acceleration;
+        state.angularVelocity += h * d.angularAcceleration;
     }
+    scatterStates(world, m_states);
 }
 
 } // namespace impetus::controller

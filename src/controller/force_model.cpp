@@ -1,5 +1,7 @@
 #include "controller/force_model.h"
 
+#include "controller/soft_body_builder.h"
+
 namespace impetus::controller {
 
 namespace {
@@ -10,7 +12,114 @@ Vec2 velocityOf(const model::BodyState& state, const Vec2& worldPoint)
     return state.velocity + cross(state.angularVelocity, Vec2(worldPoint - state.position));
 }
 
+/// Gravity, drag and the grid springs on every ellipse of every soft grid, as forces in
+/// out[...].acceleration (divided by the ellipse mass by the caller).
+void addSoftGridForces(const model::World& world, std::span<const model::BodyState> states,
+                       std::vector<BodyDerivative>& out)
+{
+    std::size_t offset = world.bodies.size();
+    for (const model::SoftGrid& grid : world.softBodies) {
+        const model::Body& body = world.bodies[grid.body.index];
+        const Vec2 weight = grid.ellipseMass * world.settings.gravity;
+        // Each ellipse's share of the body's drag coefficient: b·m/M.
+        const Scalar drag = world.settings.drag * grid.ellipseMass * body.invMass;
+        const model::BodyState* s = states.data() + offset;
+        BodyDerivative* d = out.data() + offset;
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            d[i].velocity = s[i].velocity;
+            d[i].acceleration = weight - drag * s[i].velocity;
+        }
+        for (const model::SoftSpring& spring : grid.springs) {
+            const Vec2 delta = s[spring.b].position - s[spring.a].position;
+            const Scalar length = delta.norm();
+            if (!(length > 0))
+                continue;
+            const Vec2 u = delta / length;
+            const Scalar lengthRate = u.dot(s[spring.b].velocity - s[spring.a].velocity);
+            const Scalar tension = spring.stiffness * (length - spring.restLength) + spring.damping * lengthRate;
+            const Vec2 force = tension * u;
+            d[spring.a].acceleration += force;
+            d[spring.b].acceleration -= force;
+        }
+        offset += grid.size();
+    }
+}
+
+/// The states of the bodies with each soft body's entry replaced by its grid's aggregate, for the
+/// scene springs attached to soft bodies.
+std::vector<model::BodyState> aggregateStates(const model::World& world, std::span<const model::BodyState> states,
+                                              std::vector<SoftAggregate>& aggregates)
+{
+    std::vector<model::BodyState> bodies(states.begin(), states.begin() + static_cast<std::ptrdiff_t>(world.bodies.size()));
+    aggregates.clear();
+    std::size_t offset = world.bodies.size();
+    std::vector<Vec2> positions;
+    std::vector<Vec2> velocities;
+    for (const model::SoftGrid& grid : world.softBodies) {
+        positions.clear();
+        velocities.clear();
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            positions.push_back(states[offset + i].position);
+            velocities.push_back(states[offset + i].velocity);
+        }
+        const SoftAggregate a =
+            softAggregate(grid, positions, velocities, world.bodies[grid.body.index].state.angle);
+        aggregates.push_back(a);
+        bodies[grid.body.index] = model::BodyState{a.position, a.angle, a.velocity, a.angularVelocity};
+        offset += grid.size();
+    }
+    return bodies;
+}
+
+/// Shares out a force F and torque τ on soft grid g over its ellipses as a rigid body would take
+/// them: each ellipse gets m·(F/M + (τ/I) × r), added to out[...].acceleration as a force.
+void shareOut(const model::World& world, std::size_t g, const SoftAggregate& a, const Vec2& force, Scalar torque,
+              std::span<const model::BodyState> states, std::vector<BodyDerivative>& out)
+{
+    const model::SoftGrid& grid = world.softBodies[g];
+    const std::size_t offset = world.bodies.size() + softEllipseOffset(world, g);
+    const Scalar share = grid.ellipseMass * world.bodies[grid.body.index].invMass;
+    const Scalar alpha = a.inertia > 0 ? torque / a.inertia : 0;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const Vec2 r = states[offset + i].position - a.position;
+        out[offset + i].acceleration += share * force + grid.ellipseMass * cross(alpha, r);
+    }
+}
+
 } // namespace
+
+std::size_t stateCount(const model::World& world)
+{
+    std::size_t count = world.bodies.size();
+    for (const model::SoftGrid& grid : world.softBodies)
+        count += grid.size();
+    return count;
+}
+
+void gatherStates(const model::World& world, std::vector<model::BodyState>& out)
+{
+    out.clear();
+    out.reserve(stateCount(world));
+    for (const model::Body& body : world.bodies)
+        out.push_back(body.state);
+    for (const model::SoftGrid& grid : world.softBodies) {
+        for (std::size_t i = 0; i < grid.size(); ++i)
+            out.push_back(model::BodyState{grid.positions[i], 0, grid.velocities[i], 0});
+    }
+}
+
+void scatterStates(model::World& world, std::span<const model::BodyState> states)
+{
+    std::size_t k = 0;
+    for (model::Body& body : world.bodies)
+        body.state = states[k++];
+    for (model::SoftGrid& grid : world.softBodies) {
+        for (std::size_t i = 0; i < grid.size(); ++i, ++k) {
+            grid.positions[i] = states[k].position;
+            grid.velocities[i] = states[k].velocity;
+        }
+    }
+}
 
 std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const model::BodyState> states)
 {
@@ -26,7 +135,7 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
                         std::vector<BodyDerivative>& out)
 {
     const std::size_t n = world.bodies.size();
-    out.assign(n, BodyDerivative{});
+    out.assign(states.size(), BodyDerivative{});
 
     // Accumulate forces and torques in `acceleration` and `angularAcceleration` first, then divide
     // by mass and inertia once at the end.
@@ -41,9 +150,29 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
         if (!body.fixed)
             out[i].acceleration = body.mass * gravity - drag * s.velocity;
     }
+    // A soft body's own entry stands still: its grid carries its motion.
+    for (const model::SoftGrid& grid : world.softBodies)
+        out[grid.body.index] = BodyDerivative{};
+    addSoftGridForces(world, states, out);
+
+    // Scene springs see a soft body as its grid's aggregate.
+    std::vector<SoftAggregate> aggregates;
+    std::vector<model::BodyState> softAware;
+    std::span<const model::BodyState> bodyStates = states.first(n);
+    if (!world.softBodies.empty() && !world.springs.empty()) {
+        softAware = aggregateStates(world, states, aggregates);
+        bodyStates = softAware;
+    }
+    const auto softIndex = [&](std::uint32_t body) -> std::ptrdiff_t {
+        for (std::size_t g = 0; g < world.softBodies.size(); ++g) {
+            if (world.softBodies[g].body.index == body)
+                return static_cast<std::ptrdiff_t>(g);
+        }
+        return -1;
+    };
 
     for (const model::Spring& spring : world.springs) {
-        const auto [endA, endB] = springEnds(spring, states);
+        const auto [endA, endB] = springEnds(spring, bodyStates);
         const Vec2 d = endB - endA;
         const Scalar length = d.norm();
         // With both ends on one point the direction is undefined; the force is then zero for a
@@ -53,24 +182,36 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
         const Vec2 u = d / length;
 
         const model::Body& bodyA = world.bodies[spring.bodyA.index];
-        const Vec2 velA = velocityOf(states[spring.bodyA.index], endA);
+        const Vec2 velA = velocityOf(bodyStates[spring.bodyA.index], endA);
         Vec2 velB = Vec2::Zero();
         if (spring.bodyB)
-            velB = velocityOf(states[spring.bodyB->index], endB);
+            velB = velocityOf(bodyStates[spring.bodyB->index], endB);
         const Scalar lengthRate = u.dot(velB - velA);
         const Scalar tension =
             spring.stiffness * (length - spring.restLength) + spring.damping * lengthRate;
         const Vec2 forceOnA = tension * u;
 
         if (!bodyA.fixed) {
-            BodyDerivative& da = out[spring.bodyA.index];
-            da.acceleration += forceOnA;
-            da.angularAcceleration += cross(Vec2(endA - states[spring.bodyA.index].position), forceOnA);
+            const Scalar torque = cross(Vec2(endA - bodyStates[spring.bodyA.index].position), forceOnA);
+            if (const std::ptrdiff_t g = world.softBodies.empty() ? -1 : softIndex(spring.bodyA.index); g >= 0) {
+                shareOut(world, static_cast<std::size_t>(g), aggregates[static_cast<std::size_t>(g)], forceOnA,
+                         torque, states, out);
+            } else {
+                BodyDerivative& da = out[spring.bodyA.index];
+                da.acceleration += forceOnA;
+                da.angularAcceleration += torque;
+            }
         }
         if (spring.bodyB && !world.bodies[spring.bodyB->index].fixed) {
-            BodyDerivative& db = out[spring.bodyB->index];
-            db.acceleration -= forceOnA;
-            db.angularAcceleration -= cross(Vec2(endB - states[spring.bodyB->index].position), forceOnA);
+            const Scalar torque = cross(Vec2(endB - bodyStates[spring.bodyB->index].position), forceOnA);
+            if (const std::ptrdiff_t g = world.softBodies.empty() ? -1 : softIndex(spring.bodyB->index); g >= 0) {
+                shareOut(world, static_cast<std::size_t>(g), aggregates[static_cast<std::size_t>(g)], -forceOnA,
+                         -torque, states, out);
+            } else {
+                BodyDerivative& db = out[spring.bodyB->index];
+                db.acceleration -= forceOnA;
+                db.angularAcceleration -= torque;
+            }
         }
     }
 
@@ -78,6 +219,13 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
         const model::Body& body = world.bodies[i];
         out[i].acceleration *= body.invMass;
         out[i].angularAcceleration *= body.invInertia;
+    }
+    std::size_t offset = n;
+    for (const model::SoftGrid& grid : world.softBodies) {
+        const Scalar invMass = 1 / grid.ellipseMass;
+        for (std::size_t i = 0; i < grid.size(); ++i)
+            out[offset + i].acceleration *= invMass;
+        offset += grid.size();
     }
 }
 

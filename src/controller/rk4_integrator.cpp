@@ -21,9 +21,7 @@ void advance(const std::vector<model::BodyState>& start, const std::vector<BodyD
 
 void Rk4Integrator::integrate(model::World& world, Scalar h)
 {
-    m_start.clear();
-    for (const model::Body& body : world.bodies)
-        m_start.push_back(body.state);
+    gatherStates(world, m_start);
 
     // The four stages of the classical method, each over the whole world so that coupled bodies
     // see each other's intermediate states.
@@ -36,20 +34,23 @@ void Rk4Integrator::integrate(model::World& world, Scalar h)
     computeDerivatives(world, m_stage, m_k4);
 
     const Scalar w = h / 6;
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
+    // m_stage is free now: it collects the result.
+    m_stage = m_start;
+    for (std::size_t i = 0; i < m_start.size(); ++i) {
+        model::BodyState& state = m_stage[i];
         const BodyDerivative& k1 = m_k1[i];
         const BodyDerivative& k2 = m_k2[i];
         const BodyDerivative& k3 = m_k3[i];
         const BodyDerivative& k4 = m_k4[i];
-        body.state.position += w * (k1.velocity + 2 * k2.velocity + 2 * k3.velocity + k4.velocity);
-        body.state.angle += w * (k1.angularVelocity + 2 * k2.angularVelocity +
+        state.position += w * (k1.velocity + 2 * k2.velocity + 2 * k3.velocity + k4.velocity);
+        state.angle += w * (k1.angularVelocity + 2 * k2.angularVelocity +
                                  2 * k3.angularVelocity + k4.angularVelocity);
-        body.state.velocity +=
+        state.velocity +=
             w * (k1.acceleration + 2 * k2.acceleration + 2 * k3.acceleration + k4.acceleration);
-        body.state.angularVelocity += w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
+        state.angularVelocity += w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
                                            2 * k3.angularAcceleration + k4.angularAcceleration);
     }
+    scatterStates(world, m_stage);
 }
 
 } // namespace impetus::controller

@@ -4,20 +4,19 @@ namespace impetus::controller {
 
 void SemiImplicitEulerIntegrator::integrate(model::World& world, Scalar h)
 {
-    m_states.clear();
-    for (const model::Body& body : world.bodies)
-        m_states.push_back(body.state);
+    gatherStates(world, m_states);
     computeDerivatives(world, m_states, m_derivatives);
 
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
+    for (std::size_t i = 0; i < m_states.size(); ++i) {
+        model::BodyState& state = m_states[i];
         const BodyDerivative& d = m_derivatives[i];
         // Velocity first, then position with the *new* velocity: the symplectic order.
-        body.state.velocity += h * d.acceleration;
-        body.state.angularVelocity += h * d.angularAcceleration;
-        body.state.position += h * body.state.velocity;
-        body.state.angle += h * body.state.angularVelocity;
+        state.velocity += h * d.acceleration;
+        state.angularVelocity += h * d.angularAcceleration;
+        state.position += h * state.velocity;
+        state.angle += h * state.angularVelocity;
     }
+    scatterStates(world, m_states);
 }
 
 } // namespace impetus::controller

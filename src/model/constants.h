@@ -139,4 +139,43 @@ inline constexpr Scalar kContactNormalSearchTolerance = 1e-12;
 /// kContactNormalSearchTolerance takes 35 steps; the cap only guards against NaN brackets.
 inline constexpr int kContactNormalSearchMaxIterations = 100;
 
+// --- Soft mode (controller/soft_body_builder, soft_stability, soft_density) ----------------------
+
+/// The densities "auto" chooses from, ellipses per m², lowest first. Powers of two from seed S1's
+/// 64 (collisions look right) up to 1024 (16 times finer): each step doubles the cost.
+inline constexpr Scalar kSoftAutoDensities[] = {64, 128, 256, 512, 1024};
+
+/// A 60 Hz display frame, s: "auto" asks that simulating this much time fit in the budget below.
+inline constexpr Scalar kSoftFrameTime = 1.0 / 60.0;
+
+/// Fraction of a frame's wall time that simulating one frame may take under "auto": half leaves
+/// the other half for drawing and for the machine's other work.
+inline constexpr Scalar kSoftFrameBudgetFraction = 0.5;
+
+/// Frames of trial simulation per candidate density when "auto" measures; the fastest one counts
+/// (the first pays for allocations and cold caches).
+inline constexpr int kSoftAutoTrialFrames = 3;
+
+/// Largest |λ|·h at which RK4 is used on a soft grid, with λ the fastest grid eigenvalue. RK4's
+/// stability region reaches 2.83 along the imaginary axis and 2.79 along the negative real axis;
+/// 2.5 keeps a margin for the bound's looseness in between.
+inline constexpr Scalar kRk4SoftStabilityLimit = 2.5;
+
+/// Semi-implicit Euler is stable on a damped oscillator when ω²h² + 2·γ·h < 4 (γ the damping rate
+/// c/m); the soft grid is stepped so that the left side stays below this, i.e. (0.9·2)².
+inline constexpr Scalar kSemiImplicitEulerSoftStabilityLimit = 3.24;
+
+/// Explicit Euler is stable on a damped oscillator only while h ≤ 2ζ/ω, which for the grid's
+/// damping (proportional to its stiffness) is h ≤ c/k, and h ≤ 2/γ for overdamped motion. The step
+/// is kept at this fraction of those limits.
+inline constexpr Scalar kExplicitEulerSoftSafety = 0.9;
+
+/// Most substeps one step is split into for a soft grid. Beyond it the grid is too stiff for the
+/// step (or explicit Euler has no damping to be stable with) and the user is told so; 64 substeps
+/// of the default 1/240 s step are 65 µs.
+inline constexpr int kMaxSoftSubsteps = 64;
+
+/// Points on the outline of a round soft body (circle, ellipse) mapped through its grid.
+inline constexpr int kSoftRoundOutlinePoints = 64;
+
 } // namespace impetus::constants
