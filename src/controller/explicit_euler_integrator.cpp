@@ -2,14 +2,13 @@
 
 namespace impetus::controller {
 
-void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h)
+void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start)
 {
     gatherStates(world, m_states);
-    computeDerivatives(world, m_states, m_derivatives);
 
     for (std::size_t i = 0; i < m_states.size(); ++i) {
         model::BodyState& state = m_states[i];
-        const BodyDerivative& d = m_derivatives[i];
+        const BodyDerivative& d = start[i];
         // Both updates use the derivative at the start of the step: this is what makes the method
         // explicit, and what makes it gain energy on oscillators.
         state.position += h * d.velocity;

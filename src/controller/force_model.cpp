@@ -1,6 +1,7 @@
 #include "controller/force_model.h"
 
 #include "controller/soft_body_builder.h"
+#include "model/constants.h"
 
 namespace impetus::controller {
 
@@ -25,11 +26,40 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         const Scalar drag = world.settings.drag * grid.ellipseMass * body.invMass;
         const model::BodyState* s = states.data() + offset;
         BodyDerivative* d = out.data() + offset;
+        // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
+        // ellipses about it) for the internal damping, which acts on what is left over.
+        Vec2 centre = Vec2::Zero();
+        Vec2 velocity = Vec2::Zero();
         for (std::size_t i = 0; i < grid.size(); ++i) {
-            d[i].velocity = s[i].velocity;
-            d[i].acceleration = weight - drag * s[i].velocity;
+            centre += s[i].position;
+            velocity += s[i].velocity;
         }
+        centre /= static_cast<Scalar>(grid.size());
+        velocity /= static_cast<Scalar>(grid.size());
+        Scalar spin = 0;
+        Scalar spread = 0;
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Vec2 r = s[i].position - centre;
+            spin += cross(r, Vec2(s[i].velocity - velocity));
+            spread += r.squaredNorm();
+        }
+        const Scalar omega = spread > 0 ? spin / spread : 0;
+        const Scalar internal = constants::kSoftInternalDampingRate * grid.ellipseMass;
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Vec2 rigid = velocity + cross(omega, Vec2(s[i].position - centre));
+            d[i].velocity = s[i].velocity;
+            d[i].acceleration = weight - drag * s[i].velocity - internal * (s[i].velocity - rigid);
+        }
+        // Springs come grouped by their first ellipse (buildSoftGrid): its force is summed in a
+        // local and stored once per group, instead of through memory once per spring.
+        std::uint32_t current = 0;
+        Vec2 onCurrent = Vec2::Zero();
         for (const model::SoftSpring& spring : grid.springs) {
+            if (spring.a != current) {
+                d[current].acceleration += onCurrent;
+                onCurrent.setZero();
+                current = spring.a;
+            }
             const Vec2 delta = s[spring.b].position - s[spring.a].position;
             const Scalar length = delta.norm();
             if (!(length > 0))
@@ -38,9 +68,11 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
             const Scalar lengthRate = u.dot(s[spring.b].velocity - s[spring.a].velocity);
             const Scalar tension = spring.stiffness * (length - spring.restLength) + spring.damping * lengthRate;
             const Vec2 force = tension * u;
-            d[spring.a].acceleration += force;
+            onCurrent += force;
             d[spring.b].acceleration -= force;
         }
+        if (!grid.springs.empty())
+            d[current].acceleration += onCurrent;
         offset += grid.size();
     }
 }

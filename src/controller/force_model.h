@@ -42,7 +42,8 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 ///    a whole feels the same drag as when rigid;
 ///  - each spring pulls its ends together with tension T = k·(L − L₀) + c·dL/dt along the line
 ///    between the anchors, applying the torque r × F about each centre of mass;
-///  - each soft-grid spring does the same between its two ellipses.
+///  - each soft-grid spring does the same between its two ellipses, and every ellipse feels the
+///    grid's internal damping −β·m·(v − v_rigid) (constants::kSoftInternalDampingRate).
 /// A scene spring attached to a soft body acts on the body's aggregate (centre of mass, best-fit
 /// rotation, see softAggregate); its force and torque are shared out over the ellipses as a rigid
 /// body would feel them (a = F/M + (τ/I) × r), which keeps momentum and angular momentum.

@@ -2,6 +2,13 @@
 
 namespace impetus::controller {
 
+void Integrator::integrate(model::World& world, Scalar h)
+{
+    gatherStates(world, m_currentStates);
+    computeDerivatives(world, m_currentStates, m_currentDerivatives);
+    integrate(world, h, m_currentDerivatives);
+}
+
 std::unique_ptr<Integrator> makeIntegrator(model::IntegratorKind kind)
 {
     switch (kind) {

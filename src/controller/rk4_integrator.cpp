@@ -5,7 +5,7 @@ namespace impetus::controller {
 namespace {
 
 /// stage[i] = start[i] + h·k[i] for every body (a fixed body's k has no acceleration).
-void advance(const std::vector<model::BodyState>& start, const std::vector<BodyDerivative>& k, Scalar h,
+void advance(const std::vector<model::BodyState>& start, std::span<const BodyDerivative> k, Scalar h,
              std::vector<model::BodyState>& stage)
 {
     stage = start;
@@ -19,14 +19,13 @@ void advance(const std::vector<model::BodyState>& start, const std::vector<BodyD
 
 } // namespace
 
-void Rk4Integrator::integrate(model::World& world, Scalar h)
+void Rk4Integrator::integrate(model::World& world, Scalar h, std::span<const BodyDerivative> k1s)
 {
     gatherStates(world, m_start);
 
     // The four stages of the classical method, each over the whole world so that coupled bodies
     // see each other's intermediate states.
-    computeDerivatives(world, m_start, m_k1);
-    advance(m_start, m_k1, h / 2, m_stage);
+    advance(m_start, k1s, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k2);
     advance(m_start, m_k2, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k3);
@@ -38,7 +37,7 @@ void Rk4Integrator::integrate(model::World& world, Scalar h)
     m_stage = m_start;
     for (std::size_t i = 0; i < m_start.size(); ++i) {
         model::BodyState& state = m_stage[i];
-        const BodyDerivative& k1 = m_k1[i];
+        const BodyDerivative& k1 = k1s[i];
         const BodyDerivative& k2 = m_k2[i];
         const BodyDerivative& k3 = m_k3[i];
         const BodyDerivative& k4 = m_k4[i];

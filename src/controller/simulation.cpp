@@ -129,10 +129,14 @@ void Simulation::collide(const model::World& world, Scalar h)
     }
     m_colliders.build(world, m_margins);
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
-    m_proxies.resize(pieces.size());
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-        m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
-    m_broadPhase.findPairs(m_proxies, m_pairs);
+    if (world.softBodies.empty()) {
+        m_proxies.resize(pieces.size());
+        for (std::size_t i = 0; i < pieces.size(); ++i)
+            m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
+        m_broadPhase.findPairs(m_proxies, m_pairs);
+    } else {
+        findPairsWithSoftBodies(world);
+    }
     m_profile.broadMs += millisecondsSince(broadStart);
 
     const Clock::time_point narrowStart = Clock::now();
@@ -146,6 +150,66 @@ void Simulation::collide(const model::World& world, Scalar h)
             m_manifolds.push_back({a.solver, a.piece, b.solver, b.piece, manifold, a.body, b.body});
     }
     m_profile.narrowMs += millisecondsSince(narrowStart);
+}
+
+void Simulation::findPairsWithSoftBodies(const model::World& world)
+{
+    // Two levels. The broad phase sees each soft body as one box around its ellipses (so it never
+    // sweeps past the thousands of neighbouring ellipses of one body, which never collide), next
+    // to every rigid piece. Then, for each pair of boxes that involves a soft body, the ellipses
+    // whose boxes reach into the other's box are paired with it (or with each other's).
+    const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
+    const std::vector<Aabb>& boxes = m_colliders.boxes();
+    m_proxies.clear();
+    m_proxyPieces.clear();
+    for (std::uint32_t i = 0; i < pieces.size();) {
+        const std::uint32_t body = pieces[i].body;
+        std::uint32_t end = i + 1;
+        Aabb box = boxes[i];
+        if (world.softGrid(model::BodyId{body})) {
+            while (end < pieces.size() && pieces[end].body == body) {
+                box.lower = box.lower.cwiseMin(boxes[end].lower);
+                box.upper = box.upper.cwiseMax(boxes[end].upper);
+                ++end;
+            }
+        }
+        m_proxies.push_back(BroadPhaseProxy{box, body, world.bodies[body].fixed});
+        m_proxyPieces.push_back({i, end});
+        i = end;
+    }
+    m_broadPhase.findPairs(m_proxies, m_coarsePairs);
+
+    m_pairs.clear();
+    std::vector<std::uint32_t>& nearA = m_nearA;
+    std::vector<std::uint32_t>& nearB = m_nearB;
+    for (const ProxyPair& coarse : m_coarsePairs) {
+        const auto [firstA, endA] = m_proxyPieces[coarse.first];
+        const auto [firstB, endB] = m_proxyPieces[coarse.second];
+        if (endA - firstA == 1 && endB - firstB == 1) {
+            m_pairs.push_back({firstA, firstB});
+            continue;
+        }
+        // The pieces of each side that reach into the other side's box, then every pair of them
+        // whose boxes overlap.
+        nearA.clear();
+        nearB.clear();
+        for (std::uint32_t a = firstA; a < endA; ++a) {
+            if (boxes[a].overlaps(m_proxies[coarse.second].box))
+                nearA.push_back(a);
+        }
+        for (std::uint32_t b = firstB; b < endB; ++b) {
+            if (boxes[b].overlaps(m_proxies[coarse.first].box))
+                nearB.push_back(b);
+        }
+        for (const std::uint32_t a : nearA) {
+            for (const std::uint32_t b : nearB) {
+                if (boxes[a].overlaps(boxes[b]))
+                    m_pairs.push_back({a, b});
+            }
+        }
+    }
+    // The broad phase's order, (first, second), whatever order the coarse pairs came in.
+    std::sort(m_pairs.begin(), m_pairs.end());
 }
 
 void Simulation::integratePositions(Scalar h)
@@ -264,7 +328,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
 
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
-    integratorFor(world.settings.integrator).integrate(world, h);
+    integratorFor(world.settings.integrator).integrate(world, h, m_startDerivatives);
     gatherStates(world, m_endStates);
     m_profile.integrateMs += millisecondsSince(integrateStart);
 

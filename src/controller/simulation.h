@@ -67,6 +67,8 @@ private:
     void substep(model::World& world, Scalar h, Scalar endTime);
     void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);
+    /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
+    void findPairsWithSoftBodies(const model::World& world);
     void integratePositions(Scalar h);
     /// Sets each soft body's solver body (and m_softAggregates) to the aggregate of its
     /// ellipses' solver bodies: where the joints see it.
@@ -95,6 +97,10 @@ private:
     std::vector<Scalar> m_margins;
     std::vector<BroadPhaseProxy> m_proxies;
     std::vector<ProxyPair> m_pairs;
+    std::vector<ProxyPair> m_coarsePairs; ///< with soft bodies: pairs of bodies or rigid pieces
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_proxyPieces; ///< per coarse proxy: its pieces
+    std::vector<std::uint32_t> m_nearA;
+    std::vector<std::uint32_t> m_nearB;
     std::vector<ContactSolver::PairManifold> m_manifolds;
     ColliderSet m_colliders;
     BroadPhase m_broadPhase;

@@ -1,6 +1,7 @@
 #include "controller/soft_body_builder.h"
 
 #include "controller/soft_density.h"
+#include "model/constants.h"
 
 #include <algorithm>
 #include <array>
@@ -96,6 +97,8 @@ void computeRates(model::SoftGrid& grid)
         grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
                                                                                    damping[i].yy) / grid.ellipseMass);
     }
+    // The internal damping adds its rate to every ellipse's.
+    grid.maxDampingRate += constants::kSoftInternalDampingRate;
 }
 
 /// Whether `grid` still describes `body` (same shape, mass and soft settings).

@@ -11,8 +11,19 @@ namespace impetus::controller {
 
 namespace {
 
-/// The largest stable substep of a grid, s; 0 when no substep is stable (explicit Euler, no damping).
-Scalar largestStableStep(const model::SoftGrid& grid, model::IntegratorKind integrator)
+/// The largest substep at which semi-implicit Euler is stable on the grid, s: the positive root
+/// of ω²x² + 2γx − L = 0.
+Scalar semiImplicitEulerStep(Scalar omegaSq, Scalar gamma)
+{
+    const Scalar limit = constants::kSemiImplicitEulerSoftStabilityLimit;
+    if (omegaSq > 0)
+        return (-gamma + std::sqrt(gamma * gamma + limit * omegaSq)) / omegaSq;
+    return gamma > 0 ? limit / (2 * gamma) : std::numeric_limits<Scalar>::infinity();
+}
+
+/// The largest stable substep of a grid under the integrator alone, s; 0 when no substep is
+/// stable (explicit Euler, no damping).
+Scalar integratorStep(const model::SoftGrid& grid, model::IntegratorKind integrator)
 {
     const Scalar omegaSq = grid.maxSpringRate;
     const Scalar omega = std::sqrt(omegaSq);
@@ -23,13 +34,8 @@ Scalar largestStableStep(const model::SoftGrid& grid, model::IntegratorKind inte
         const Scalar rate = std::max(omega, gamma);
         return rate > 0 ? constants::kRk4SoftStabilityLimit / rate : unlimited;
     }
-    case model::IntegratorKind::SemiImplicitEuler: {
-        // The positive root of ω²x² + 2γx − L = 0.
-        const Scalar limit = constants::kSemiImplicitEulerSoftStabilityLimit;
-        if (omegaSq > 0)
-            return (-gamma + std::sqrt(gamma * gamma + limit * omegaSq)) / omegaSq;
-        return gamma > 0 ? limit / (2 * gamma) : unlimited;
-    }
+    case model::IntegratorKind::SemiImplicitEuler:
+        return semiImplicitEulerStep(omegaSq, gamma);
     case model::IntegratorKind::Euler: {
         if (omegaSq == 0)
             return gamma > 0 ? constants::kExplicitEulerSoftSafety * 2 / gamma : unlimited;
@@ -49,6 +55,18 @@ std::string formatted(Scalar value)
     out.precision(3);
     out << value;
     return out.str();
+}
+
+/// The largest stable substep of a grid, s. Whatever the integrator, an ellipse held by a contact
+/// force finishes its step as x = x₀ + h·v (as a resting rigid body does) with the velocity the
+/// integrator and the contact gave it; for its springs that is semi-implicit Euler's position
+/// update, stable while ω·h < 2. (Its velocity, damping included, is still the integrator's.)
+Scalar largestStableStep(const model::SoftGrid& grid, model::IntegratorKind integrator)
+{
+    const Scalar omega = std::sqrt(grid.maxSpringRate);
+    const Scalar contactStep =
+        omega > 0 ? constants::kSoftContactStabilityLimit / omega : std::numeric_limits<Scalar>::infinity();
+    return std::min(integratorStep(grid, integrator), contactStep);
 }
 
 } // namespace

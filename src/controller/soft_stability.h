@@ -30,6 +30,8 @@ struct SoftStability {
 ///  - semi-implicit Euler: ω²(h/s)² + 2γ·(h/s) ≤ kSemiImplicitEulerSoftStabilityLimit;
 ///  - explicit Euler: h/s ≤ kExplicitEulerSoftSafety·min(c/k, 2/γ); with no damping it is
 ///    unstable at any step, and gets kMaxSoftSubsteps (stable = false).
+/// and whatever the integrator, also ω·(h/s) ≤ kSoftContactStabilityLimit: an ellipse held by a
+/// contact force finishes its step as x = x₀ + h·v, semi-implicit Euler's position update.
 /// ω² = grid.maxSpringRate, γ = grid.maxDampingRate. Returns at most kMaxSoftSubsteps; `stable`
 /// tells whether that was enough.
 int requiredSoftSubsteps(const model::SoftGrid& grid, model::IntegratorKind integrator, Scalar h, bool& stable);

@@ -68,7 +68,7 @@ struct SoftGrid {
     bool operator==(const SoftGrid&) const = default;
 
     /// Number of ellipses.
-    std::size_t size() const { return positions.size(); }
+    std::size_t size() const { return restPositions.size(); }
 
     /// The ellipse in lattice cell (column, row), or −1 when that cell is empty or outside.
     std::int32_t ellipseAt(int column, int row) const
