@@ -82,24 +82,33 @@ std::vector<Vec2> softOutline(const model::World& world, const model::SoftGrid& 
         // Lattice coordinates, with ellipse centres on whole numbers.
         const Scalar u = (local.x() - grid.latticeOrigin.x()) / grid.cellSize.x() - 0.5;
         const Scalar v = (local.y() - grid.latticeOrigin.y()) / grid.cellSize.y() - 0.5;
-        const int column = static_cast<int>(std::floor(u));
-        const int row = static_cast<int>(std::floor(v));
-        const Scalar fu = u - column;
-        const Scalar fv = v - row;
+        // The lattice square around the point, kept inside the lattice so that a point beyond the
+        // outermost centres (a box's edge) is extrapolated linearly from the last square.
+        const int column = std::clamp(static_cast<int>(std::floor(u)), 0, std::max(0, grid.columns - 2));
+        const int row = std::clamp(static_cast<int>(std::floor(v)), 0, std::max(0, grid.rows - 2));
+        const std::array<std::array<int, 2>, 4> corners{{{0, 0}, {1, 0}, {0, 1}, {1, 1}}};
+        std::array<std::int32_t, 4> nodes{};
+        bool complete = grid.columns > 1 && grid.rows > 1;
+        for (std::size_t k = 0; k < 4; ++k) {
+            nodes[k] = grid.ellipseAt(column + corners[k][0], row + corners[k][1]);
+            complete = complete && nodes[k] >= 0;
+        }
+        // With a corner missing (outside a curved or concave shape) the weights of the others
+        // are renormalised inside the square instead.
+        const Scalar fu = complete ? u - column : std::clamp(u - column, 0.0, 1.0);
+        const Scalar fv = complete ? v - row : std::clamp(v - row, 0.0, 1.0);
         Vec2 moved = Vec2::Zero();
         Scalar weight = 0;
-        const std::array<std::array<int, 2>, 4> corners{{{0, 0}, {1, 0}, {0, 1}, {1, 1}}};
-        for (const auto& [dc, dr] : corners) {
-            const std::int32_t e = grid.ellipseAt(column + dc, row + dr);
-            if (e < 0)
+        for (std::size_t k = 0; k < 4; ++k) {
+            if (nodes[k] < 0)
                 continue;
-            const Scalar w = (dc != 0 ? fu : 1 - fu) * (dr != 0 ? fv : 1 - fv);
-            moved += w * displacement[static_cast<std::size_t>(e)];
+            const Scalar w = (corners[k][0] != 0 ? fu : 1 - fu) * (corners[k][1] != 0 ? fv : 1 - fv);
+            moved += w * displacement[static_cast<std::size_t>(nodes[k])];
             weight += w;
         }
-        if (weight > 0) {
+        if (!complete && weight > 0) {
             moved /= weight;
-        } else {
+        } else if (!complete) {
             // No ellipse around this point (a spike thinner than a cell): follow the nearest one.
             const Vec2 rest = local - grid.restCentre;
             std::size_t nearest = 0;

@@ -32,8 +32,9 @@ struct SoftSpringView {
 /// body frame (a box's or polygon's edges cut into pieces about a cell long, or
 /// kSoftRoundOutlinePoints points around a circle or ellipse), each point moved by the body's
 /// best-fit rigid motion plus the displacement of the grid around it, interpolated bilinearly
-/// between the four nearest ellipse centres (missing ones, outside the shape, left out of the
-/// weights). Counter-clockwise, not closed (the last point is not repeated).
+/// between the four ellipse centres of the lattice square around it (extrapolated linearly beyond
+/// the outermost centres; when a corner is missing, outside the shape, the others' weights are
+/// renormalised). Counter-clockwise, not closed (the last point is not repeated).
 std::vector<Vec2> softOutline(const model::World& world, const model::SoftGrid& grid);
 
 /// Every ellipse of the grid.
