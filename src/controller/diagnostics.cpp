@@ -1,6 +1,7 @@
 #include "controller/diagnostics.h"
 
 #include "controller/force_model.h"
+#include "controller/soft_body_builder.h"
 
 #include <vector>
 
@@ -35,6 +36,14 @@ Energy computeEnergy(const model::World& world)
         for (const model::SoftSpring& spring : grid.springs) {
             const Scalar stretch = (grid.positions[spring.b] - grid.positions[spring.a]).norm() - spring.restLength;
             e.elastic += 0.5 * spring.stiffness * stretch * stretch;
+        }
+        // Shape matching's springs to the goal positions of the best-fit rigid motion.
+        const model::Body& body = world.bodies[grid.body.index];
+        const SoftAggregate a = softAggregate(grid, grid.positions, grid.velocities, body.state.angle);
+        const Scalar matching = softShapeMatchingStiffness(grid, body);
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Vec2 goal = a.position + rotate(grid.restPositions[i], a.angle);
+            e.elastic += 0.5 * matching * (grid.positions[i] - goal).squaredNorm();
         }
     }
     return e;

@@ -38,17 +38,30 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         velocity /= static_cast<Scalar>(grid.size());
         Scalar spin = 0;
         Scalar spread = 0;
+        Scalar dot = 0;
+        Scalar turn = 0;
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const Vec2 r = s[i].position - centre;
             spin += cross(r, Vec2(s[i].velocity - velocity));
             spread += r.squaredNorm();
+            dot += grid.restPositions[i].dot(r);
+            turn += cross(grid.restPositions[i], r);
         }
         const Scalar omega = spread > 0 ? spin / spread : 0;
         const Scalar internal = constants::kSoftInternalDampingRate * grid.ellipseMass;
+        // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
+        // of the rest lattice puts it (see softShapeMatchingStiffness).
+        const Scalar norm = std::hypot(dot, turn);
+        const Scalar c = norm > 0 ? dot / norm : 1;
+        const Scalar sn = norm > 0 ? turn / norm : 0;
+        const Scalar matching = softShapeMatchingStiffness(grid, body);
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const Vec2 rigid = velocity + cross(omega, Vec2(s[i].position - centre));
+            const Vec2& r = grid.restPositions[i];
+            const Vec2 goal = centre + Vec2(c * r.x() - sn * r.y(), sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
-            d[i].acceleration = weight - drag * s[i].velocity - internal * (s[i].velocity - rigid);
+            d[i].acceleration = weight - drag * s[i].velocity - internal * (s[i].velocity - rigid) -
+                                matching * (s[i].position - goal);
         }
         // Springs come grouped by their first ellipse (buildSoftGrid): its force is summed in a
         // local and stored once per group, instead of through memory once per spring.

@@ -67,6 +67,9 @@ Scalar largestEigenvalue(Scalar xx, Scalar xy, Scalar yy)
     return mean + std::sqrt(half * half + xy * xy);
 }
 
+/// The body's mass, from its grid.
+Scalar massOf(const model::SoftGrid& grid) { return grid.ellipseMass * static_cast<Scalar>(grid.size()); }
+
 /// Fills grid.maxSpringRate and maxDampingRate. The stiffness matrix K of the grid is made of 2×2
 /// blocks k·u·uᵀ; by Gershgorin's theorem on blocks, λmax(M⁻¹K) ≤ max over ellipses of
 /// 2·λmax(Σ k·u·uᵀ)/m, which is exact for the fastest mode of a uniform square lattice (8k/m).
@@ -97,8 +100,9 @@ void computeRates(model::SoftGrid& grid)
         grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
                                                                                    damping[i].yy) / grid.ellipseMass);
     }
-    // The internal damping adds its rate to every ellipse's.
+    // The internal damping adds its rate to every ellipse's, and shape matching its k_s/m.
     grid.maxDampingRate += constants::kSoftInternalDampingRate;
+    grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
 /// Whether `grid` still describes `body` (same shape, mass and soft settings).
@@ -110,6 +114,11 @@ bool matches(const model::SoftGrid& grid, const model::Body& body)
 } // namespace
 
 bool isSoftBody(const model::Body& body) { return body.soft.has_value() && !body.fixed; }
+
+Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body)
+{
+    return constants::kSoftShapeMatching * grid.settings.stiffness * grid.ellipseMass * body.invMass;
+}
 
 model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar ellipsesPerSquareMeter)
 {

@@ -46,6 +46,13 @@ struct SoftAggregate {
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
                             std::span<const Vec2> velocities, Scalar referenceAngle);
 
+/// The shape-matching spring constant of each ellipse of `grid`, N/m: kSoftShapeMatching·k·m/M, so
+/// that the whole body's pull back to its rest shape is kSoftShapeMatching times the grid springs'
+/// stiffness k, at any density. Each ellipse feels F = −k_s·(x − g), with g where the best-fit
+/// rigid motion of the rest lattice puts it (Müller et al. 2005); the forces sum to zero and have
+/// zero torque about the centre of mass, and store ½k_s·|x − g|² (counted as elastic energy).
+Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body);
+
 /// Makes world.softBodies match world.bodies: builds the grid of every soft body that has none,
 /// rebuilds one whose body's shape, mass or soft settings changed, drops grids of bodies that are
 /// no longer soft, and places again (as a rigid copy) the grid of a body whose state was set by

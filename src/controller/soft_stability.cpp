@@ -43,7 +43,12 @@ Scalar integratorStep(const model::SoftGrid& grid, model::IntegratorKind integra
         const Scalar damping = grid.settings.damping;
         if (!(damping > 0))
             return 0;
-        return constants::kExplicitEulerSoftSafety * std::min(damping / stiffness, 2 / gamma);
+        // Shape matching's pull (rate λ² = k_s/m) is damped only by the internal damping β:
+        // h ≤ 2ζ/ω becomes h ≤ β/λ² there.
+        const Scalar matchingRate =
+            constants::kSoftShapeMatching * stiffness / (grid.ellipseMass * static_cast<Scalar>(grid.size()));
+        return constants::kExplicitEulerSoftSafety *
+               std::min({damping / stiffness, 2 / gamma, constants::kSoftInternalDampingRate / matchingRate});
     }
     }
     return unlimited;

@@ -28,7 +28,8 @@ struct SoftStability {
 /// The substeps one grid needs under `integrator` at step h (s):
 ///  - RK4: |λ|·h/s ≤ kRk4SoftStabilityLimit with |λ| ≤ max(ω, γ);
 ///  - semi-implicit Euler: ω²(h/s)² + 2γ·(h/s) ≤ kSemiImplicitEulerSoftStabilityLimit;
-///  - explicit Euler: h/s ≤ kExplicitEulerSoftSafety·min(c/k, 2/γ); with no damping it is
+///  - explicit Euler: h/s ≤ kExplicitEulerSoftSafety·min(c/k, 2/γ, β/λ²) (λ² the shape-matching
+///    rate, β the internal damping rate); with no damping it is
 ///    unstable at any step, and gets kMaxSoftSubsteps (stable = false).
 /// and whatever the integrator, also ω·(h/s) ≤ kSoftContactStabilityLimit: an ellipse held by a
 /// contact force finishes its step as x = x₀ + h·v, semi-implicit Euler's position update.

@@ -399,13 +399,21 @@ TEST(SoftBody, CollidesWithARigidBox)
     world.bodies.push_back(withMaterial(soft(makeBox("jelly", 1, 1, 1, Vec2(0, 0.5)), 64), 0, 0.5));
     world.bodies.push_back(withMaterial(makeBox("block", 0.5, 0.4, 0.4, Vec2(0.1, 1.5)), 0, 0.5));
     run(world, 4.0);
+    // Over the next 2 s it stays where it is, on top: a known residual sway of the block on the
+    // jelly (about a millimetre, ~1 cm/s, see docs/physics.md) but no drift and no sinking.
+    controller::Simulation simulation;
+    Vec2 low = Vec2::Constant(INFINITY);
+    Vec2 high = Vec2::Constant(-INFINITY);
+    for (int i = 0; i < 480; ++i) {
+        simulation.step(world);
+        low = low.cwiseMin(world.bodies[2].state.position);
+        high = high.cwiseMax(world.bodies[2].state.position);
+        ASSERT_TRUE(world.bodies[2].colliding);
+    }
+    EXPECT_LT((high - low).maxCoeff(), 0.005);
     const Scalar top = verticalExtent(world.softBodies[0]).second;
     EXPECT_NEAR(world.bodies[2].state.position.y() - 0.2, top, 0.01);
-    // It rests, up to a sway of the block on the jelly of about a millimetre (issue 5's closing
-    // note: a rigid body resting on a soft one keeps a residual rocking of ~1 cm/s).
     EXPECT_LT(std::abs(world.bodies[2].state.position.x()), 0.5 - 0.2); // wholly over the jelly
-    EXPECT_LT(world.bodies[2].state.velocity.norm(), 0.03);
-    EXPECT_TRUE(world.bodies[2].colliding);
     EXPECT_GE(world.bodies[2].collisionCount, 1);
 }
 
@@ -455,8 +463,9 @@ TEST(SoftStability, SubstepsWhenTheGridIsTooStiffAndSaysSo)
     world.bodies.push_back(soft(makeBox("jelly", 1, 1, 1, Vec2(0, 2)), 256));
     controller::prepareSoftBodies(world);
     const model::SoftGrid& grid = world.softBodies[0];
-    // 8k/m for the uniform lattice: 8 · 2000 · 256 (and the damping's 8c/m + β).
-    EXPECT_NEAR(grid.maxSpringRate, 8 * 2000 * 256.0, 1e-6);
+    // 8k/m for the uniform lattice, 8 · 2000 · 256, plus shape matching's κ·k/M (and the
+    // damping's 8c/m + β).
+    EXPECT_NEAR(grid.maxSpringRate, 8 * 2000 * 256.0 + constants::kSoftShapeMatching * 2000 / 1.0, 1e-6);
     EXPECT_NEAR(grid.maxDampingRate, 8 * 1 * 256.0 + constants::kSoftInternalDampingRate, 1e-9);
     for (const model::IntegratorKind kind :
          {model::IntegratorKind::Euler, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Rk4}) {
@@ -487,12 +496,13 @@ TEST(SoftStability, SubstepsWhenTheGridIsTooStiffAndSaysSo)
 
 TEST(SoftStability, EveryIntegratorStaysStableAcrossTheStiffnessRange)
 {
-    // The documented range at the default damping of 1 N·s/m: 100 to 20,000 N/m (explicit Euler:
-    // 10,000) at 64 to 256 per m². A stretched body released without gravity must lose energy.
+    // The documented range at the default damping of 1 N·s/m, for a 1 kg body: 100 to 20,000 N/m
+    // (explicit Euler: 5,000) at 64 to 256 per m². A stretched body released without gravity must lose energy.
     for (const model::IntegratorKind kind :
          {model::IntegratorKind::Euler, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Rk4}) {
-        // Explicit Euler is stable only while h ≤ c/k: up to k ≈ 13,000·c at 64 substeps.
-        const Scalar stiffest = kind == model::IntegratorKind::Euler ? 10000.0 : 20000.0;
+        // Explicit Euler is stable only while h ≤ β/λ² (shape matching): up to k ≈ 6,900 N/m for
+        // a 1 kg body at 64 substeps.
+        const Scalar stiffest = kind == model::IntegratorKind::Euler ? 5000.0 : 20000.0;
         for (const auto& [stiffness, density] : {std::pair{100.0, 64.0}, std::pair{stiffest, 256.0}}) {
             model::World world = makeEmptyWorld(kind, kH);
             world.bodies.push_back(soft(makeBox("jelly", 1, 0.5, 0.5, Vec2::Zero()), density, stiffness));
@@ -522,7 +532,8 @@ TEST(SoftDensity, AutoPicksADensityInRangeAndRecordsIt)
     const Scalar chosen = world.softBodies[0].ellipsesPerSquareMeter;
     const auto& candidates = constants::kSoftAutoDensities;
     EXPECT_NE(std::find(std::begin(candidates), std::end(candidates), chosen), std::end(candidates)) << chosen;
-    EXPECT_EQ(world.softBodies[0].size(), static_cast<std::size_t>(chosen));
+    const auto side = static_cast<std::size_t>(std::lround(std::sqrt(chosen))); // cells across 1 m
+    EXPECT_EQ(world.softBodies[0].size(), side * side);
     // The scene keeps the user's choice; a rebuild reuses the measured value.
     EXPECT_TRUE(world.bodies[1].soft->autoDensity);
     world.bodies[1].soft->stiffness = 3000;
