@@ -3,6 +3,9 @@
 #include "controller/soft_body_builder.h"
 #include "model/constants.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace impetus::controller {
 
 namespace {
@@ -13,17 +16,80 @@ Vec2 velocityOf(const model::BodyState& state, const Vec2& worldPoint)
     return state.velocity + cross(state.angularVelocity, Vec2(worldPoint - state.position));
 }
 
-/// Gravity, drag and the grid springs on every ellipse of every soft grid, as forces in
-/// out[...].acceleration (divided by the ellipse mass by the caller).
+/// The grid springs' accelerations on the ellipses of one grid (states s, derivatives d), every
+/// ellipse of mass 1/invMass. Two springs at a time in the two lanes of an Eigen::Array2d, so that
+/// the square roots and divisions run packed; the sums then go to the ends one by one.
+void addGridSpringForces(const model::SoftGrid& grid, const model::BodyState* s, BodyDerivative* d, Scalar invMass)
+{
+    using Lanes = Eigen::Array2d;
+    const std::vector<model::SoftSpring>& springs = grid.springs;
+    const std::size_t count = springs.size();
+    // Springs come grouped by their first ellipse (buildSoftGrid): its acceleration is summed in
+    // locals and stored once per group, instead of through memory once per spring.
+    std::uint32_t current = count == 0 ? 0 : springs.front().a;
+    Scalar sumX = 0;
+    Scalar sumY = 0;
+    const auto apply = [&](const model::SoftSpring& spring, Scalar ax, Scalar ay) {
+        if (spring.a != current) {
+            d[current].acceleration += Vec2(sumX, sumY);
+            sumX = 0;
+            sumY = 0;
+            current = spring.a;
+        }
+        sumX += ax;
+        sumY += ay;
+        d[spring.b].acceleration -= Vec2(ax, ay);
+    };
+    std::size_t k = 0;
+    for (; k + 1 < count; k += 2) {
+        const model::SoftSpring& p = springs[k];
+        const model::SoftSpring& q = springs[k + 1];
+        const model::BodyState& pa = s[p.a];
+        const model::BodyState& pb = s[p.b];
+        const model::BodyState& qa = s[q.a];
+        const model::BodyState& qb = s[q.b];
+        const Lanes dx(pb.position.x() - pa.position.x(), qb.position.x() - qa.position.x());
+        const Lanes dy(pb.position.y() - pa.position.y(), qb.position.y() - qa.position.y());
+        const Lanes dvx(pb.velocity.x() - pa.velocity.x(), qb.velocity.x() - qa.velocity.x());
+        const Lanes dvy(pb.velocity.y() - pa.velocity.y(), qb.velocity.y() - qa.velocity.y());
+        const Lanes length = (dx * dx + dy * dy).sqrt();
+        const Lanes invLength = length.inverse();
+        // T = k·(L − L₀) + c·dL/dt, and the acceleration T/m along (dx, dy)/L. Two ends on one
+        // point have no line to pull along: no force (the select drops the NaN of 0·∞).
+        const Lanes tension = Lanes(p.stiffness, q.stiffness) * (length - Lanes(p.restLength, q.restLength)) +
+                              Lanes(p.damping, q.damping) * (invLength * (dx * dvx + dy * dvy));
+        const Lanes scale = (length > 0).select(tension * invMass * invLength, Lanes::Zero());
+        apply(p, scale(0) * dx(0), scale(0) * dy(0));
+        apply(q, scale(1) * dx(1), scale(1) * dy(1));
+    }
+    for (; k < count; ++k) {
+        const model::SoftSpring& p = springs[k];
+        const Vec2 delta = s[p.b].position - s[p.a].position;
+        const Scalar length = delta.norm();
+        if (!(length > 0))
+            continue;
+        const Scalar lengthRate = delta.dot(s[p.b].velocity - s[p.a].velocity) / length;
+        const Scalar tension = p.stiffness * (length - p.restLength) + p.damping * lengthRate;
+        const Scalar scale = tension * invMass / length;
+        apply(p, scale * delta.x(), scale * delta.y());
+    }
+    if (count > 0)
+        d[current].acceleration += Vec2(sumX, sumY);
+}
+
+/// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of every
+/// soft grid: writes every field of their entries in `out`, with the accelerations (every ellipse
+/// of a grid has the same mass, so forces are divided by it up front).
 void addSoftGridForces(const model::World& world, std::span<const model::BodyState> states,
                        std::vector<BodyDerivative>& out)
 {
     std::size_t offset = world.bodies.size();
     for (const model::SoftGrid& grid : world.softBodies) {
         const model::Body& body = world.bodies[grid.body.index];
-        const Vec2 weight = grid.ellipseMass * world.settings.gravity;
-        // Each ellipse's share of the body's drag coefficient: b·m/M.
-        const Scalar drag = world.settings.drag * grid.ellipseMass * body.invMass;
+        const Scalar invMass = 1 / grid.ellipseMass;
+        const Vec2 gravity = world.settings.gravity;
+        // Each ellipse's share of the body's drag coefficient, b·m/M, over its mass m.
+        const Scalar drag = world.settings.drag * body.invMass;
         const model::BodyState* s = states.data() + offset;
         BodyDerivative* d = out.data() + offset;
         // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
@@ -48,44 +114,24 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
             turn += cross(grid.restPositions[i], r);
         }
         const Scalar omega = spread > 0 ? spin / spread : 0;
-        const Scalar internal = constants::kSoftInternalDampingRate * grid.ellipseMass;
+        const Scalar internal = constants::kSoftInternalDampingRate;
         // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
         // of the rest lattice puts it (see softShapeMatchingStiffness).
         const Scalar norm = std::hypot(dot, turn);
         const Scalar c = norm > 0 ? dot / norm : 1;
         const Scalar sn = norm > 0 ? turn / norm : 0;
-        const Scalar matching = softShapeMatchingStiffness(grid, body);
+        const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const Vec2 rigid = velocity + cross(omega, Vec2(s[i].position - centre));
             const Vec2& r = grid.restPositions[i];
             const Vec2 goal = centre + Vec2(c * r.x() - sn * r.y(), sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
-            d[i].acceleration = weight - drag * s[i].velocity - internal * (s[i].velocity - rigid) -
+            d[i].angularVelocity = 0;
+            d[i].acceleration = gravity - drag * s[i].velocity - internal * (s[i].velocity - rigid) -
                                 matching * (s[i].position - goal);
+            d[i].angularAcceleration = 0;
         }
-        // Springs come grouped by their first ellipse (buildSoftGrid): its force is summed in a
-        // local and stored once per group, instead of through memory once per spring.
-        std::uint32_t current = 0;
-        Vec2 onCurrent = Vec2::Zero();
-        for (const model::SoftSpring& spring : grid.springs) {
-            if (spring.a != current) {
-                d[current].acceleration += onCurrent;
-                onCurrent.setZero();
-                current = spring.a;
-            }
-            const Vec2 delta = s[spring.b].position - s[spring.a].position;
-            const Scalar length = delta.norm();
-            if (!(length > 0))
-                continue;
-            const Vec2 u = delta / length;
-            const Scalar lengthRate = u.dot(s[spring.b].velocity - s[spring.a].velocity);
-            const Scalar tension = spring.stiffness * (length - spring.restLength) + spring.damping * lengthRate;
-            const Vec2 force = tension * u;
-            onCurrent += force;
-            d[spring.b].acceleration -= force;
-        }
-        if (!grid.springs.empty())
-            d[current].acceleration += onCurrent;
+        addGridSpringForces(grid, s, d, invMass);
         offset += grid.size();
     }
 }
@@ -117,17 +163,17 @@ std::vector<model::BodyState> aggregateStates(const model::World& world, std::sp
 }
 
 /// Shares out a force F and torque τ on soft grid g over its ellipses as a rigid body would take
-/// them: each ellipse gets m·(F/M + (τ/I) × r), added to out[...].acceleration as a force.
+/// them: each ellipse's acceleration gets F/M + (τ/I) × r.
 void shareOut(const model::World& world, std::size_t g, const SoftAggregate& a, const Vec2& force, Scalar torque,
               std::span<const model::BodyState> states, std::vector<BodyDerivative>& out)
 {
     const model::SoftGrid& grid = world.softBodies[g];
     const std::size_t offset = world.bodies.size() + softEllipseOffset(world, g);
-    const Scalar share = grid.ellipseMass * world.bodies[grid.body.index].invMass;
+    const Vec2 linear = world.bodies[grid.body.index].invMass * force;
     const Scalar alpha = a.inertia > 0 ? torque / a.inertia : 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const Vec2 r = states[offset + i].position - a.position;
-        out[offset + i].acceleration += share * force + grid.ellipseMass * cross(alpha, r);
+        out[offset + i].acceleration += linear + cross(alpha, r);
     }
 }
 
@@ -180,7 +226,9 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
                         std::vector<BodyDerivative>& out)
 {
     const std::size_t n = world.bodies.size();
-    out.assign(states.size(), BodyDerivative{});
+    // The bodies' entries start from zero; the ellipses' are written whole by addSoftGridForces.
+    out.resize(states.size());
+    std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n), BodyDerivative{});
 
     // Accumulate forces and torques in `acceleration` and `angularAcceleration` first, then divide
     // by mass and inertia once at the end.
@@ -264,13 +312,6 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
         const model::Body& body = world.bodies[i];
         out[i].acceleration *= body.invMass;
         out[i].angularAcceleration *= body.invInertia;
-    }
-    std::size_t offset = n;
-    for (const model::SoftGrid& grid : world.softBodies) {
-        const Scalar invMass = 1 / grid.ellipseMass;
-        for (std::size_t i = 0; i < grid.size(); ++i)
-            out[offset + i].acceleration *= invMass;
-        offset += grid.size();
     }
 }
 
