@@ -29,16 +29,20 @@ void addGridSpringForces(const model::SoftGrid& grid, const model::BodyState* s,
     std::uint32_t current = count == 0 ? 0 : springs.front().a;
     Scalar sumX = 0;
     Scalar sumY = 0;
+    // Component by component: a Vec2 built from two computed scalars goes through the stack
+    // and stalls the load that reads it back.
     const auto apply = [&](const model::SoftSpring& spring, Scalar ax, Scalar ay) {
         if (spring.a != current) {
-            d[current].acceleration += Vec2(sumX, sumY);
+            d[current].acceleration.x() += sumX;
+            d[current].acceleration.y() += sumY;
             sumX = 0;
             sumY = 0;
             current = spring.a;
         }
         sumX += ax;
         sumY += ay;
-        d[spring.b].acceleration -= Vec2(ax, ay);
+        d[spring.b].acceleration.x() -= ax;
+        d[spring.b].acceleration.y() -= ay;
     };
     std::size_t k = 0;
     for (; k + 1 < count; k += 2) {
@@ -73,8 +77,10 @@ void addGridSpringForces(const model::SoftGrid& grid, const model::BodyState* s,
         const Scalar scale = tension * invMass / length;
         apply(p, scale * delta.x(), scale * delta.y());
     }
-    if (count > 0)
-        d[current].acceleration += Vec2(sumX, sumY);
+    if (count > 0) {
+        d[current].acceleration.x() += sumX;
+        d[current].acceleration.y() += sumY;
+    }
 }
 
 /// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of every
@@ -121,14 +127,22 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         const Scalar c = norm > 0 ? dot / norm : 1;
         const Scalar sn = norm > 0 ? turn / norm : 0;
         const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
+        // Written with scalars: see addGridSpringForces.
         for (std::size_t i = 0; i < grid.size(); ++i) {
-            const Vec2 rigid = velocity + cross(omega, Vec2(s[i].position - centre));
+            const Scalar px = s[i].position.x() - centre.x();
+            const Scalar py = s[i].position.y() - centre.y();
+            const Scalar vx = s[i].velocity.x();
+            const Scalar vy = s[i].velocity.y();
             const Vec2& r = grid.restPositions[i];
-            const Vec2 goal = centre + Vec2(c * r.x() - sn * r.y(), sn * r.x() + c * r.y());
+            // v − v_rigid, with v_rigid = v_c + ω × p; and x − g, with g = c + R·r.
+            const Scalar relativeX = vx - (velocity.x() - omega * py);
+            const Scalar relativeY = vy - (velocity.y() + omega * px);
+            const Scalar offX = px - (c * r.x() - sn * r.y());
+            const Scalar offY = py - (sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
             d[i].angularVelocity = 0;
-            d[i].acceleration = gravity - drag * s[i].velocity - internal * (s[i].velocity - rigid) -
-                                matching * (s[i].position - goal);
+            d[i].acceleration.x() = gravity.x() - drag * vx - internal * relativeX - matching * offX;
+            d[i].acceleration.y() = gravity.y() - drag * vy - internal * relativeY - matching * offY;
             d[i].angularAcceleration = 0;
         }
         addGridSpringForces(grid, s, d, invMass);
