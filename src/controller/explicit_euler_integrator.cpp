@@ -2,13 +2,14 @@
 
 namespace impetus::controller {
 
-void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start)
+void ExplicitEulerIntegrator::step(const model::World&, std::span<const model::BodyState> start,
+                                    std::span<const BodyDerivative> startDerivative, Scalar h,
+                                    std::vector<model::BodyState>& end)
 {
-    gatherStates(world, m_states);
-
-    for (std::size_t i = 0; i < m_states.size(); ++i) {
-        model::BodyState& state = m_states[i];
-        const BodyDerivative& d = start[i];
+    end.assign(start.begin(), start.end());
+    for (std::size_t i = 0; i < end.size(); ++i) {
+        model::BodyState& state = end[i];
+        const BodyDerivative& d = startDerivative[i];
         // Both updates use the derivative at the start of the step: this is what makes the method
         // explicit, and what makes it gain energy on oscillators.
         state.position += h * d.velocity;
@@ -16,7 +17,6 @@ void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h, std::span
         state.velocity += h * d.acceleration;
         state.angularVelocity += h * d.angularAcceleration;
     }
-    scatterStates(world, m_states);
 }
 
 } // namespace impetus::controller

@@ -23,9 +23,13 @@ public:
     /// constant velocity (none by default).
     void integrate(model::World& world, Scalar h);
 
-    /// The same, given `start` = computeDerivatives of the world's current state list, which the
-    /// caller often has already (the simulation needs it for collisions): it is not computed again.
-    virtual void integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start) = 0;
+    /// One step of the world's state list (force_model.h, stateCount) without touching the world:
+    /// from `start`, whose derivative `startDerivative` the caller has already (the simulation
+    /// needs it for collisions, so it is not computed again), to `end`, h seconds later. `world`
+    /// supplies the forces: its bodies' masses, springs and soft grids.
+    virtual void step(const model::World& world, std::span<const model::BodyState> start,
+                      std::span<const BodyDerivative> startDerivative, Scalar h,
+                      std::vector<model::BodyState>& end) = 0;
 
     /// Which method this is.
     virtual model::IntegratorKind kind() const = 0;
@@ -33,30 +37,27 @@ public:
 private:
     std::vector<model::BodyState> m_currentStates;
     std::vector<BodyDerivative> m_currentDerivatives;
+    std::vector<model::BodyState> m_nextStates;
 };
 
 /// Explicit (forward) Euler: x ← x + h·v, v ← v + h·a(x, v), both from the old state. First order;
 /// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step.
 class ExplicitEulerIntegrator final : public Integrator {
 public:
-    using Integrator::integrate;
-    void integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::Euler; }
 
-private:
-    std::vector<model::BodyState> m_states;
 };
 
 /// Semi-implicit (symplectic) Euler: v ← v + h·a(x, v), then x ← x + h·v with the new velocity.
 /// First order, but its energy error stays bounded on conservative systems.
 class SemiImplicitEulerIntegrator final : public Integrator {
 public:
-    using Integrator::integrate;
-    void integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::SemiImplicitEuler; }
 
-private:
-    std::vector<model::BodyState> m_states;
 };
 
 /// Classical fourth-order Runge–Kutta: four derivative evaluations k₁…k₄ at t, t+h/2, t+h/2 and
@@ -64,12 +65,11 @@ private:
 /// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile).
 class Rk4Integrator final : public Integrator {
 public:
-    using Integrator::integrate;
-    void integrate(model::World& world, Scalar h, std::span<const BodyDerivative> start) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::Rk4; }
 
 private:
-    std::vector<model::BodyState> m_start;
     std::vector<model::BodyState> m_stage;
     std::vector<BodyDerivative> m_k2, m_k3, m_k4;
 };

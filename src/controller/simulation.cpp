@@ -328,8 +328,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
 
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
-    integratorFor(world.settings.integrator).integrate(world, h, m_startDerivatives);
-    gatherStates(world, m_endStates);
+    integratorFor(world.settings.integrator).step(world, m_startStates, m_startDerivatives, h, m_endStates);
     m_profile.integrateMs += millisecondsSince(integrateStart);
 
     // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
