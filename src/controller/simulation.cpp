@@ -67,15 +67,14 @@ void Simulation::setUpSolverBodies(const model::World& world)
         const model::SoftGrid& grid = world.softBodies[g];
         const std::uint32_t owner = grid.body.index;
         m_entries[owner] = Entry::SoftOwner;
-        const SoftAggregate a =
-            softAggregate(grid, grid.positions, grid.velocities, world.bodies[owner].state.angle);
-        SolverBody& sb = m_bodies[owner];
-        sb.position = a.position;
-        sb.angle = a.angle;
-        sb.velocity = a.velocity;
-        sb.angularVelocity = a.angularVelocity;
-        sb.invInertia = a.inertia > 0 ? 1 / a.inertia : 0;
-        m_softAggregates[g] = sb;
+        // Its state is already the grid's aggregate (updateSoftOwners, placeSoftGrid); joints
+        // also need the grid's present moment of inertia, which takes a pass over the ellipses.
+        if (!world.joints.empty()) {
+            const SoftAggregate a =
+                softAggregate(grid, grid.positions, grid.velocities, world.bodies[owner].state.angle);
+            m_bodies[owner].invInertia = a.inertia > 0 ? 1 / a.inertia : 0;
+        }
+        m_softAggregates[g] = m_bodies[owner];
         const Scalar invMass = 1 / grid.ellipseMass;
         for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
             m_entries[next] = Entry::Ellipse;
