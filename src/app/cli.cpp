@@ -2,6 +2,9 @@
 
 #include "controller/diagnostics.h"
 #include "controller/simulation.h"
+#include "controller/soft_body_builder.h"
+#include "controller/soft_comparison.h"
+#include "controller/soft_stability.h"
 #include "model/scene_io.h"
 
 #include <nlohmann/json.hpp>
@@ -32,11 +35,13 @@ constexpr std::string_view kUsage =
     "  impetus-cli run SCENE.json [--time SECONDS | --steps N] [--dt SECONDS]\n"
     "                             [--integrator euler|semi-implicit-euler|rk4]\n"
     "                             [--csv FILE] [--sample-every N] [--summary FILE|-]\n"
-    "                             [--collision-log FILE]\n"
+    "                             [--collision-log FILE] [--compare-rigid BODY]\n"
     "  impetus-cli validate SCENE.json\n"
     "\n"
     "run       steps the scene headless with its fixed time step (default: 10 s of simulated time)\n"
     "validate  prints 'ok', or every problem in the scene\n"
+    "--compare-rigid BODY  also runs the scene with BODY rigid and soft and prints, as CSV on\n"
+    "          stdout, how far apart its two centre-of-mass paths are over time\n"
     "exit codes: 0 success, 1 failure at run time, 2 bad usage or a bad scene\n";
 
 /// What `run` was asked to do.
@@ -50,6 +55,7 @@ struct RunOptions {
     std::int64_t sampleEvery = 1;
     std::optional<std::string> summaryPath;
     std::optional<std::string> collisionLogPath;
+    std::optional<std::string> compareRigid; ///< body name: run it rigid and soft and compare
 };
 
 /// Thrown inside argument parsing only; caught in runCli and turned into exit code 2.
@@ -132,6 +138,8 @@ RunOptions parseRunOptions(std::span<const std::string> args)
             options.summaryPath = value();
         } else if (arg == "--collision-log") {
             options.collisionLogPath = value();
+        } else if (arg == "--compare-rigid") {
+            options.compareRigid = value();
         } else if (arg.rfind("--", 0) == 0 || (arg.size() > 1 && arg[0] == '-')) {
             throw UsageError{"unknown option '" + arg + "'"};
         } else if (!haveScene) {
@@ -145,6 +153,8 @@ RunOptions parseRunOptions(std::span<const std::string> args)
         throw UsageError{"run: no scene file given"};
     if (options.time && options.steps)
         throw UsageError{"--time and --steps cannot be used together"};
+    if (options.compareRigid && options.summaryPath == "-")
+        throw UsageError{"--compare-rigid and --summary - both write to stdout: give the summary a file"};
     return options;
 }
 
@@ -250,7 +260,10 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
         b["inertia"] = body.inertia;
         b["collisions"] = body.collisionCount;
         b["colliding"] = body.colliding;
-        b["ellipses"] = 0; // soft mode's ellipse grid arrives with issue 5
+        const model::SoftGrid* grid = world.softGrid(model::BodyId{static_cast<std::uint32_t>(bodies.size())});
+        b["ellipses"] = grid ? grid->size() : 0;
+        if (grid) // an extension: the density the grid was built at ("auto" shows its choice)
+            b["ellipsesPerSquareMeter"] = grid->ellipsesPerSquareMeter;
         bodies.push_back(std::move(b));
     }
     summary["bodies"] = std::move(bodies);
@@ -295,6 +308,38 @@ private:
     std::int64_t m_total;
     Clock::time_point m_last;
 };
+
+/// Notes on stderr for the soft bodies: the density "auto" chose, and the substeps their stiffness
+/// needs (with the reason).
+void reportSoftBodies(const model::World& world, std::ostream& err)
+{
+    for (const model::SoftGrid& grid : world.softBodies) {
+        if (grid.settings.autoDensity) {
+            err << "impetus-cli run: note: soft body '" << world.body(grid.body).name << "': \"auto\" chose "
+                << formatNumber(grid.ellipsesPerSquareMeter) << " ellipses per m² on this machine ("
+                << grid.size() << " ellipses)\n";
+        }
+    }
+    const controller::SoftStability stability = controller::softStability(world);
+    if (!stability.message.empty())
+        err << "impetus-cli run: note: " << stability.message << '\n';
+}
+
+/// --compare-rigid: the body's centre-of-mass paths, rigid and soft, and how far apart they are.
+void writeComparison(std::ostream& out, const model::World& initial, model::BodyId body, std::int64_t steps,
+                     std::int64_t sampleEvery)
+{
+    const controller::RigidSoftComparison c = controller::compareRigidSoft(initial, body, steps, sampleEvery);
+    out << "time,rigidX,rigidY,softX,softY,distance\n";
+    for (const controller::RigidSoftSample& s : c.samples) {
+        out << formatNumber(s.time) << ',' << formatNumber(s.rigid.x()) << ',' << formatNumber(s.rigid.y()) << ','
+            << formatNumber(s.soft.x()) << ',' << formatNumber(s.soft.y()) << ',' << formatNumber(s.distance) << '\n';
+    }
+    out << "# '" << initial.body(body).name << "' soft (" << c.ellipses << " ellipses, "
+        << formatNumber(c.ellipsesPerSquareMeter) << " per m²) against rigid: rms distance "
+        << formatNumber(c.rmsDistance) << " m, largest " << formatNumber(c.maxDistance) << " m at t = "
+        << formatNumber(c.maxDistanceTime) << " s\n";
+}
 
 int commandValidate(std::span<const std::string> args, std::ostream& out, std::ostream& err)
 {
@@ -358,6 +403,22 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         collisionLog << "time,bodyA,bodyB,x,y,nx,ny,normalImpulse,normalSpeedBefore,normalSpeedAfter\n";
     }
 
+    std::optional<model::BodyId> compared;
+    if (options.compareRigid) {
+        compared = world.findBody(*options.compareRigid);
+        if (!compared) {
+            err << "impetus-cli run: --compare-rigid: no body called '" << *options.compareRigid << "' in "
+                << options.scenePath << "\n";
+            return kExitBadInput;
+        }
+    }
+
+    // Soft bodies get their grids now, so that "auto" measures before the run and both notes
+    // below come first.
+    const model::World initial = world;
+    controller::prepareSoftBodies(world);
+    reportSoftBodies(world, err);
+
     controller::Simulation simulation;
     {
         ProgressLine progress(err, errIsTerminal, totalSteps);
@@ -404,6 +465,8 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         out << "ran " << totalSteps << " steps (" << formatNumber(simulatedTime) << " s) with "
             << model::integratorName(world.settings.integrator) << ", dt = " << formatNumber(dt) << " s\n";
     }
+    if (compared)
+        writeComparison(out, initial, *compared, totalSteps, options.sampleEvery);
     return kExitOk;
 }
 

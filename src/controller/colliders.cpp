@@ -17,7 +17,37 @@ Aabb enlarged(Aabb box, Scalar margin)
     return box;
 }
 
+/// Half-extents of an ellipse with semi-axes a, b turned by the angle of cosine c and sine s:
+/// √(a²c² + b²s²) along x and √(a²s² + b²c²) along y.
+Vec2 ellipseHalfExtents(Scalar a, Scalar b, Scalar c, Scalar s)
+{
+    return Vec2(std::sqrt(a * a * c * c + b * b * s * s), std::sqrt(a * a * s * s + b * b * c * c));
+}
+
 } // namespace
+
+void ColliderSet::addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, std::uint32_t& nextEllipse,
+                              const Transform& xf, Scalar margin)
+{
+    const Vec2 semi = grid.semiAxes();
+    // Square cells give circles, which collide in closed form; others true ellipses (GJK/EPA).
+    const bool round = semi.x() == semi.y();
+    const Vec2 half = round ? Vec2(semi) : ellipseHalfExtents(semi.x(), semi.y(), xf.c, xf.s);
+    for (std::uint32_t i = 0; i < grid.size(); ++i) {
+        ColliderPiece piece;
+        piece.kind = round ? ColliderPiece::Kind::Circle : ColliderPiece::Kind::Ellipse;
+        piece.body = body;
+        piece.piece = i;
+        piece.solver = nextEllipse++;
+        piece.center = grid.positions[i];
+        piece.radiusX = semi.x();
+        piece.radiusY = semi.y();
+        piece.c = xf.c;
+        piece.s = xf.s;
+        m_pieces.push_back(piece);
+        m_boxes.push_back(enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin));
+    }
+}
 
 void ColliderSet::build(const model::World& world, const std::vector<Scalar>& margins)
 {
@@ -26,15 +56,24 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
     m_vertices.clear();
     m_normals.clear();
 
+    // Soft grids come in body order, and so do their ellipses in the state list.
+    std::size_t nextGrid = 0;
+    auto nextEllipse = static_cast<std::uint32_t>(world.bodies.size());
     for (std::uint32_t b = 0; b < world.bodies.size(); ++b) {
         const model::Body& body = world.bodies[b];
         const Transform xf = Transform::of(body.state);
         const Scalar margin = margins[b];
 
+        if (nextGrid < world.softBodies.size() && world.softBodies[nextGrid].body.index == b) {
+            addSoftGrid(world.softBodies[nextGrid++], b, nextEllipse, xf, margin);
+            continue;
+        }
+
         if (const auto* circle = std::get_if<model::Circle>(&body.shape)) {
             ColliderPiece piece;
             piece.kind = ColliderPiece::Kind::Circle;
             piece.body = b;
+            piece.solver = b;
             piece.center = xf.position;
             piece.radiusX = circle->radius;
             m_pieces.push_back(piece);
@@ -46,17 +85,14 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
             ColliderPiece piece;
             piece.kind = ColliderPiece::Kind::Ellipse;
             piece.body = b;
+            piece.solver = b;
             piece.center = xf.position;
             piece.radiusX = ellipse->radiusX;
             piece.radiusY = ellipse->radiusY;
             piece.c = xf.c;
             piece.s = xf.s;
             m_pieces.push_back(piece);
-            // Half-extents of a rotated ellipse: √(a²c² + b²s²) along x and √(a²s² + b²c²) along y.
-            const Scalar a2 = ellipse->radiusX * ellipse->radiusX;
-            const Scalar b2 = ellipse->radiusY * ellipse->radiusY;
-            const Vec2 half(std::sqrt(a2 * xf.c * xf.c + b2 * xf.s * xf.s),
-                            std::sqrt(a2 * xf.s * xf.s + b2 * xf.c * xf.c));
+            const Vec2 half = ellipseHalfExtents(ellipse->radiusX, ellipse->radiusY, xf.c, xf.s);
             m_boxes.push_back(enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin));
             continue;
         }
@@ -66,6 +102,7 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
             ColliderPiece piece;
             piece.kind = ColliderPiece::Kind::Polygon;
             piece.body = b;
+            piece.solver = b;
             piece.piece = k;
             piece.firstVertex = static_cast<std::uint32_t>(m_vertices.size());
             piece.vertexCount = static_cast<std::uint32_t>(pieces[k].size());

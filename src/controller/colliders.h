@@ -4,6 +4,7 @@
 
 #include "controller/collision_types.h"
 #include "controller/narrow_phase.h"
+#include "controller/transform.h"
 #include "model/scalar.h"
 #include "model/world.h"
 
@@ -16,8 +17,11 @@ namespace impetus::controller {
 struct ColliderPiece {
     enum class Kind : std::uint8_t { Polygon, Circle, Ellipse };
     Kind kind = Kind::Polygon;
-    std::uint32_t body = 0; ///< index into World::bodies
-    std::uint32_t piece = 0; ///< index into the body's convex pieces (0 for round shapes)
+    std::uint32_t body = 0; ///< index into World::bodies (for a soft body's ellipse: its owner)
+    /// index into the body's convex pieces (0 for round shapes), or a soft body's ellipse index
+    std::uint32_t piece = 0;
+    /// index into the world's state list (force_model.h, stateCount): the body, or the ellipse
+    std::uint32_t solver = 0;
     std::uint32_t firstVertex = 0; ///< polygon: first vertex in ColliderSet::vertices
     std::uint32_t vertexCount = 0; ///< polygon: number of vertices
     Vec2 center = Vec2::Zero(); ///< polygon centroid, or circle / ellipse centre, m
@@ -32,7 +36,9 @@ struct ColliderPiece {
 class ColliderSet {
 public:
     /// Places every piece of every body at its current state. `margins[i]` (m) enlarges the boxes
-    /// of body i's pieces: how far the body may travel relative to anything in one step.
+    /// of body i's pieces: how far the body may travel relative to anything in one step. A soft
+    /// body's pieces are the ellipses of its grid (circles when its cells are square), turned by
+    /// the body's best-fit angle.
     void build(const model::World& world, const std::vector<Scalar>& margins);
 
     const std::vector<ColliderPiece>& pieces() const { return m_pieces; }
@@ -42,6 +48,10 @@ public:
     ConvexShape shape(std::uint32_t i) const;
 
 private:
+    /// Adds the ellipses of a soft body's grid, numbering their state entries from nextEllipse.
+    void addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, std::uint32_t& nextEllipse,
+                     const Transform& xf, Scalar margin);
+
     std::vector<ColliderPiece> m_pieces;
     std::vector<Aabb> m_boxes;
     std::vector<Vec2> m_vertices;

@@ -53,9 +53,9 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
     std::size_t cursor = 0;
     for (const ContactConstraint& c : constraints) {
         model::ContactRecord& r = records.emplace_back();
-        r.bodyA = model::BodyId{c.bodyA};
+        r.bodyA = model::BodyId{c.ownerA};
         r.pieceA = c.pieceA;
-        r.bodyB = model::BodyId{c.bodyB};
+        r.bodyB = model::BodyId{c.ownerB};
         r.pieceB = c.pieceB;
         r.pointCount = static_cast<std::uint8_t>(c.pointCount);
         for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
@@ -66,18 +66,18 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         r.touching = isTouching(c);
         if (!r.touching)
             continue;
-        world.bodies[c.bodyA].colliding = true;
-        world.bodies[c.bodyB].colliding = true;
+        world.bodies[c.ownerA].colliding = true;
+        world.bodies[c.ownerB].colliding = true;
 
-        const BodyPair pair(c.bodyA, c.bodyB);
+        const BodyPair pair(c.ownerA, c.ownerB);
         while (cursor < before.size() && before[cursor] < pair)
             ++cursor;
         const bool touchedBefore = (cursor < before.size() && before[cursor] == pair) ||
                                    std::binary_search(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(cursor), pair);
         if (touchedBefore)
             continue;
-        // A pair of bodies may touch through several pieces: the first touching one opens the
-        // event and the others add their impulse to it.
+        // A pair of bodies may touch through several pieces (a soft body through many ellipses):
+        // the first touching one opens the event and the others add their impulse to it.
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
         const ContactConstraintPoint& p = c.points[0];
@@ -87,7 +87,7 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
             impulse += q.normalImpulse + q.impactImpulse;
         }
         const auto open = std::find_if(events.begin(), events.end(), [&](const CollisionEvent& e) {
-            return e.bodyA.index == c.bodyA && e.bodyB.index == c.bodyB;
+            return e.bodyA.index == c.ownerA && e.bodyB.index == c.ownerB;
         });
         if (open != events.end()) {
             open->normalImpulse += impulse;
@@ -95,8 +95,8 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         }
         CollisionEvent e;
         e.time = world.time;
-        e.bodyA = model::BodyId{c.bodyA};
-        e.bodyB = model::BodyId{c.bodyB};
+        e.bodyA = model::BodyId{c.ownerA};
+        e.bodyB = model::BodyId{c.ownerB};
         e.point = p.point;
         e.normal = c.normal;
         e.normalImpulse = impulse;

@@ -271,7 +271,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
     // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
     // range starts.
     const PairManifold& first = manifolds[begin];
-    const PairKey firstKey{first.bodyA, first.pieceA, first.bodyB, first.pieceB};
+    const PairKey firstKey{first.ownerA, first.pieceA, first.ownerB, first.pieceB};
     std::size_t cursor = static_cast<std::size_t>(
         std::lower_bound(previous.begin(), previous.end(), firstKey,
                          [](const model::ContactRecord& r, const PairKey& key) { return keyOf(r) < key; }) -
@@ -286,17 +286,19 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         c.pieceA = pm.pieceA;
         c.bodyB = pm.bodyB;
         c.pieceB = pm.pieceB;
+        c.ownerA = pm.ownerA;
+        c.ownerB = pm.ownerB;
         c.normal = pm.manifold.normal;
         c.pointCount = pm.manifold.count;
-        const model::Body& bodyA = world.bodies[c.bodyA];
-        const model::Body& bodyB = world.bodies[c.bodyB];
+        const model::Body& bodyA = world.bodies[c.ownerA];
+        const model::Body& bodyB = world.bodies[c.ownerB];
         c.friction = mixFriction(bodyA.material.friction, bodyB.material.friction);
         c.restitution = mixRestitution(bodyA.material.restitution, bodyB.material.restitution);
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
         c.localNormalA = rotate(c.normal, -a.angle);
 
-        const PairKey want{c.bodyA, c.pieceA, c.bodyB, c.pieceB};
+        const PairKey want{c.ownerA, c.pieceA, c.ownerB, c.pieceB};
         while (cursor < previous.size() && keyOf(previous[cursor]) < want)
             ++cursor;
         const model::ContactRecord* match =

@@ -55,10 +55,14 @@ struct ContactConstraintPoint {
 
 /// A contact between two convex pieces, with up to two points sharing a normal.
 struct ContactConstraint {
-    std::uint32_t bodyA = 0;
+    std::uint32_t bodyA = 0; ///< solver body (index into the solver's body span)
     std::uint32_t pieceA = 0;
-    std::uint32_t bodyB = 0;
+    std::uint32_t bodyB = 0; ///< solver body
     std::uint32_t pieceB = 0;
+    /// The World::bodies index that owns each piece: the body itself, or a soft body for one of
+    /// its ellipses (whose solver body is the ellipse). Materials, records and events use it.
+    std::uint32_t ownerA = 0;
+    std::uint32_t ownerB = 0;
     Vec2 normal = Vec2::Zero(); ///< unit, from A to B
     Vec2 localNormalA = Vec2::Zero(); ///< the normal in A's frame (position correction)
     Scalar friction = 0; ///< mixed μ
@@ -105,16 +109,21 @@ public:
         std::array<VelocityPoint, 2> points{};
     };
 
-    /// One pair of pieces and its manifold, in broad-phase order.
+    /// One pair of pieces and its manifold, in broad-phase order: sorted by (ownerA, pieceA,
+    /// ownerB, pieceB), as the world's contact records are.
     struct PairManifold {
-        std::uint32_t bodyA = 0;
+        std::uint32_t bodyA = 0; ///< solver body of piece A
         std::uint32_t pieceA = 0;
-        std::uint32_t bodyB = 0;
+        std::uint32_t bodyB = 0; ///< solver body of piece B
         std::uint32_t pieceB = 0;
         Manifold manifold;
+        std::uint32_t ownerA = 0; ///< World::bodies index owning piece A (see ContactConstraint)
+        std::uint32_t ownerB = 0;
     };
 
-    /// Creates the constraints. `bodies` holds every body at the start of the step.
+    /// Creates the constraints. `bodies` holds every solver body at the start of the step, and
+    /// `derivatives` their smooth-force derivatives, indexed alike (world bodies, then soft-grid
+    /// ellipses: force_model.h, stateCount).
     void prepare(const model::World& world, std::span<const PairManifold> manifolds,
                  std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives);
 

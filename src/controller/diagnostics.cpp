@@ -1,6 +1,7 @@
 #include "controller/diagnostics.h"
 
 #include "controller/force_model.h"
+#include "controller/soft_body_builder.h"
 
 #include <vector>
 
@@ -13,7 +14,7 @@ Energy computeEnergy(const model::World& world)
     states.reserve(world.bodies.size());
     for (const model::Body& body : world.bodies) {
         states.push_back(body.state);
-        if (body.fixed)
+        if (body.fixed || world.softGrid(model::BodyId{static_cast<std::uint32_t>(states.size() - 1)}))
             continue;
         const model::BodyState& s = body.state;
         e.kinetic += 0.5 * body.mass * s.velocity.squaredNorm() +
@@ -25,11 +26,32 @@ Energy computeEnergy(const model::World& world)
         const Scalar stretch = (endB - endA).norm() - spring.restLength;
         e.elastic += 0.5 * spring.stiffness * stretch * stretch;
     }
+    // A soft body's energy is its ellipses': their motion (deformation included), their height,
+    // and the energy in their springs.
+    for (const model::SoftGrid& grid : world.softBodies) {
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            e.kinetic += 0.5 * grid.ellipseMass * grid.velocities[i].squaredNorm();
+            e.potential -= grid.ellipseMass * world.settings.gravity.dot(grid.positions[i]);
+        }
+        for (const model::SoftSpring& spring : grid.springs) {
+            const Scalar stretch = (grid.positions[spring.b] - grid.positions[spring.a]).norm() - spring.restLength;
+            e.elastic += 0.5 * spring.stiffness * stretch * stretch;
+        }
+        // Shape matching's springs to the goal positions of the best-fit rigid motion.
+        const model::Body& body = world.bodies[grid.body.index];
+        const SoftAggregate a = softAggregate(grid, grid.positions, grid.velocities, body.state.angle);
+        const Scalar matching = softShapeMatchingStiffness(grid, body);
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Vec2 goal = a.position + rotate(grid.restPositions[i], a.angle);
+            e.elastic += 0.5 * matching * (grid.positions[i] - goal).squaredNorm();
+        }
+    }
     return e;
 }
 
 Vec2 linearMomentum(const model::World& world)
 {
+    // A soft body's state is its grid's aggregate, whose velocity is momentum / mass.
     Vec2 p = Vec2::Zero();
     for (const model::Body& body : world.bodies) {
         if (!body.fixed)
@@ -41,11 +63,17 @@ Vec2 linearMomentum(const model::World& world)
 Scalar angularMomentum(const model::World& world)
 {
     Scalar l = 0;
-    for (const model::Body& body : world.bodies) {
-        if (body.fixed)
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (body.fixed || world.softGrid(model::BodyId{i}))
             continue;
         const model::BodyState& s = body.state;
         l += body.inertia * s.angularVelocity + body.mass * cross(s.position, s.velocity);
+    }
+    // A soft body's is the sum over its ellipses (which do not spin).
+    for (const model::SoftGrid& grid : world.softBodies) {
+        for (std::size_t i = 0; i < grid.size(); ++i)
+            l += grid.ellipseMass * cross(grid.positions[i], grid.velocities[i]);
     }
     return l;
 }

@@ -9,7 +9,8 @@
 
 namespace impetus::controller {
 
-/// Energy of a world, J.
+/// Energy of a world, J. A soft body counts as its grid: each ellipse's ½mv² and height, and
+/// ½k(L − L₀)² for each grid spring.
 struct Energy {
     /// Σ ½mv² + ½Iω² over dynamic bodies.
     Scalar kinetic = 0;

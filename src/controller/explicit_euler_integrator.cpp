@@ -2,22 +2,20 @@
 
 namespace impetus::controller {
 
-void ExplicitEulerIntegrator::integrate(model::World& world, Scalar h)
+void ExplicitEulerIntegrator::step(const model::World&, std::span<const model::BodyState> start,
+                                    std::span<const BodyDerivative> startDerivative, Scalar h,
+                                    std::vector<model::BodyState>& end)
 {
-    m_states.clear();
-    for (const model::Body& body : world.bodies)
-        m_states.push_back(body.state);
-    computeDerivatives(world, m_states, m_derivatives);
-
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
-        const BodyDerivative& d = m_derivatives[i];
+    end.assign(start.begin(), start.end());
+    for (std::size_t i = 0; i < end.size(); ++i) {
+        model::BodyState& state = end[i];
+        const BodyDerivative& d = startDerivative[i];
         // Both updates use the derivative at the start of the step: this is what makes the method
         // explicit, and what makes it gain energy on oscillators.
-        body.state.position += h * d.velocity;
-        body.state.angle += h * d.angularVelocity;
-        body.state.velocity += h * d.acceleration;
-        body.state.angularVelocity += h * d.angularAcceleration;
+        state.position += h * d.velocity;
+        state.angle += h * d.angularVelocity;
+        state.velocity += h * d.acceleration;
+        state.angularVelocity += h * d.angularAcceleration;
     }
 }
 

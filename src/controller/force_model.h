@@ -20,17 +20,36 @@ struct BodyDerivative {
     Scalar angularAcceleration = 0; ///< ω̇ = τ/I, rad/s²
 };
 
+/// The length of the world's state list: one entry per body (World::bodies order), then one per
+/// soft-grid ellipse (World::softBodies order, each grid's ellipses in order). An ellipse's entry
+/// uses position and velocity only; its angle and angular velocity stay zero.
+std::size_t stateCount(const model::World& world);
+
+/// Copies the world's state list into `out` (resized to stateCount(world)).
+void gatherStates(const model::World& world, std::vector<model::BodyState>& out);
+
+/// Writes a state list back into the world: bodies' states and the grids' ellipses.
+void scatterStates(model::World& world, std::span<const model::BodyState> states);
+
 /// World positions of a spring's two ends when the bodies are in `states` (states[i] belongs to
 /// world.bodies[i]), m.
 std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const model::BodyState> states);
 
-/// The derivative of every body's state, all bodies as one coupled system:
-///  - gravity F = m·g on every dynamic body;
-///  - Stokes drag F = −b·v (b = world.settings.drag) on every dynamic body;
+/// The derivative of every entry of the state list (see stateCount), all as one coupled system:
+///  - gravity F = m·g on every dynamic body and every soft-grid ellipse;
+///  - Stokes drag F = −b·v (b = world.settings.drag) on every dynamic body; a soft body's share
+///    of b goes to each ellipse in proportion to its mass (F = −b·(m/M)·v), so that the body as
+///    a whole feels the same drag as when rigid;
 ///  - each spring pulls its ends together with tension T = k·(L − L₀) + c·dL/dt along the line
-///    between the anchors, applying the torque r × F about each centre of mass.
-/// Fixed bodies get no acceleration: they keep the velocity they are given.
-/// `out` is resized to world.bodies.size().
+///    between the anchors, applying the torque r × F about each centre of mass;
+///  - each soft-grid spring does the same between its two ellipses, and every ellipse feels the
+///    grid's internal damping −β·m·(v − v_rigid) (constants::kSoftInternalDampingRate).
+/// A scene spring attached to a soft body acts on the body's aggregate (centre of mass, best-fit
+/// rotation, see softAggregate); its force and torque are shared out over the ellipses as a rigid
+/// body would feel them (a = F/M + (τ/I) × r), which keeps momentum and angular momentum.
+/// Fixed bodies get no acceleration: they keep the velocity they are given. A soft body's own
+/// entry gets a zero derivative: its state follows its grid (updateSoftOwners).
+/// `states` must have stateCount(world) entries; `out` is resized to the same.
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
                         std::vector<BodyDerivative>& out);
 

@@ -2,6 +2,14 @@
 
 namespace impetus::controller {
 
+void Integrator::integrate(model::World& world, Scalar h)
+{
+    gatherStates(world, m_currentStates);
+    computeDerivatives(world, m_currentStates, m_currentDerivatives);
+    step(world, m_currentStates, m_currentDerivatives, h, m_nextStates);
+    scatterStates(world, m_nextStates);
+}
+
 std::unique_ptr<Integrator> makeIntegrator(model::IntegratorKind kind)
 {
     switch (kind) {

@@ -8,6 +8,7 @@
 #include "model/world.h"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace impetus::controller {
@@ -20,34 +21,43 @@ public:
 
     /// Advances every body's state in `world` by h seconds. Fixed bodies move with their own
     /// constant velocity (none by default).
-    virtual void integrate(model::World& world, Scalar h) = 0;
+    void integrate(model::World& world, Scalar h);
+
+    /// One step of the world's state list (force_model.h, stateCount) without touching the world:
+    /// from `start`, whose derivative `startDerivative` the caller has already (the simulation
+    /// needs it for collisions, so it is not computed again), to `end`, h seconds later. `world`
+    /// supplies the forces: its bodies' masses, springs and soft grids.
+    virtual void step(const model::World& world, std::span<const model::BodyState> start,
+                      std::span<const BodyDerivative> startDerivative, Scalar h,
+                      std::vector<model::BodyState>& end) = 0;
 
     /// Which method this is.
     virtual model::IntegratorKind kind() const = 0;
+
+private:
+    std::vector<model::BodyState> m_currentStates;
+    std::vector<BodyDerivative> m_currentDerivatives;
+    std::vector<model::BodyState> m_nextStates;
 };
 
 /// Explicit (forward) Euler: x ← x + h·v, v ← v + h·a(x, v), both from the old state. First order;
 /// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step.
 class ExplicitEulerIntegrator final : public Integrator {
 public:
-    void integrate(model::World& world, Scalar h) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::Euler; }
 
-private:
-    std::vector<model::BodyState> m_states;
-    std::vector<BodyDerivative> m_derivatives;
 };
 
 /// Semi-implicit (symplectic) Euler: v ← v + h·a(x, v), then x ← x + h·v with the new velocity.
 /// First order, but its energy error stays bounded on conservative systems.
 class SemiImplicitEulerIntegrator final : public Integrator {
 public:
-    void integrate(model::World& world, Scalar h) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::SemiImplicitEuler; }
 
-private:
-    std::vector<model::BodyState> m_states;
-    std::vector<BodyDerivative> m_derivatives;
 };
 
 /// Classical fourth-order Runge–Kutta: four derivative evaluations k₁…k₄ at t, t+h/2, t+h/2 and
@@ -55,13 +65,13 @@ private:
 /// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile).
 class Rk4Integrator final : public Integrator {
 public:
-    void integrate(model::World& world, Scalar h) override;
+    void step(const model::World& world, std::span<const model::BodyState> start,
+              std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::Rk4; }
 
 private:
-    std::vector<model::BodyState> m_start;
     std::vector<model::BodyState> m_stage;
-    std::vector<BodyDerivative> m_k1, m_k2, m_k3, m_k4;
+    std::vector<BodyDerivative> m_k2, m_k3, m_k4;
 };
 
 /// A new integrator of the given kind.

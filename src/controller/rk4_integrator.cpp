@@ -5,50 +5,48 @@ namespace impetus::controller {
 namespace {
 
 /// stage[i] = start[i] + h·k[i] for every body (a fixed body's k has no acceleration).
-void advance(const std::vector<model::BodyState>& start, const std::vector<BodyDerivative>& k, Scalar h,
+void advance(std::span<const model::BodyState> start, std::span<const BodyDerivative> k, Scalar h,
              std::vector<model::BodyState>& stage)
 {
-    stage = start;
+    stage.resize(start.size());
     for (std::size_t i = 0; i < start.size(); ++i) {
-        stage[i].position += h * k[i].velocity;
-        stage[i].angle += h * k[i].angularVelocity;
-        stage[i].velocity += h * k[i].acceleration;
-        stage[i].angularVelocity += h * k[i].angularAcceleration;
+        stage[i].position = start[i].position + h * k[i].velocity;
+        stage[i].angle = start[i].angle + h * k[i].angularVelocity;
+        stage[i].velocity = start[i].velocity + h * k[i].acceleration;
+        stage[i].angularVelocity = start[i].angularVelocity + h * k[i].angularAcceleration;
     }
 }
 
 } // namespace
 
-void Rk4Integrator::integrate(model::World& world, Scalar h)
+void Rk4Integrator::step(const model::World& world, std::span<const model::BodyState> start,
+                         std::span<const BodyDerivative> k1s, Scalar h, std::vector<model::BodyState>& end)
 {
-    m_start.clear();
-    for (const model::Body& body : world.bodies)
-        m_start.push_back(body.state);
-
     // The four stages of the classical method, each over the whole world so that coupled bodies
     // see each other's intermediate states.
-    computeDerivatives(world, m_start, m_k1);
-    advance(m_start, m_k1, h / 2, m_stage);
+    advance(start, k1s, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k2);
-    advance(m_start, m_k2, h / 2, m_stage);
+    advance(start, m_k2, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k3);
-    advance(m_start, m_k3, h, m_stage);
+    advance(start, m_k3, h, m_stage);
     computeDerivatives(world, m_stage, m_k4);
 
     const Scalar w = h / 6;
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
-        const BodyDerivative& k1 = m_k1[i];
+    end.resize(start.size());
+    for (std::size_t i = 0; i < start.size(); ++i) {
+        const model::BodyState& s0 = start[i];
+        model::BodyState& state = end[i];
+        const BodyDerivative& k1 = k1s[i];
         const BodyDerivative& k2 = m_k2[i];
         const BodyDerivative& k3 = m_k3[i];
         const BodyDerivative& k4 = m_k4[i];
-        body.state.position += w * (k1.velocity + 2 * k2.velocity + 2 * k3.velocity + k4.velocity);
-        body.state.angle += w * (k1.angularVelocity + 2 * k2.angularVelocity +
-                                 2 * k3.angularVelocity + k4.angularVelocity);
-        body.state.velocity +=
-            w * (k1.acceleration + 2 * k2.acceleration + 2 * k3.acceleration + k4.acceleration);
-        body.state.angularVelocity += w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
-                                           2 * k3.angularAcceleration + k4.angularAcceleration);
+        state.position = s0.position + w * (k1.velocity + 2 * k2.velocity + 2 * k3.velocity + k4.velocity);
+        state.angle = s0.angle + w * (k1.angularVelocity + 2 * k2.angularVelocity + 2 * k3.angularVelocity +
+                                  k4.angularVelocity);
+        state.velocity =
+            s0.velocity + w * (k1.acceleration + 2 * k2.acceleration + 2 * k3.acceleration + k4.acceleration);
+        state.angularVelocity = s0.angularVelocity + w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
+                                                      2 * k3.angularAcceleration + k4.angularAcceleration);
     }
 }
 

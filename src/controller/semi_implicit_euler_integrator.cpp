@@ -2,21 +2,19 @@
 
 namespace impetus::controller {
 
-void SemiImplicitEulerIntegrator::integrate(model::World& world, Scalar h)
+void SemiImplicitEulerIntegrator::step(const model::World&, std::span<const model::BodyState> start,
+                                        std::span<const BodyDerivative> startDerivative, Scalar h,
+                                        std::vector<model::BodyState>& end)
 {
-    m_states.clear();
-    for (const model::Body& body : world.bodies)
-        m_states.push_back(body.state);
-    computeDerivatives(world, m_states, m_derivatives);
-
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
-        const BodyDerivative& d = m_derivatives[i];
+    end.assign(start.begin(), start.end());
+    for (std::size_t i = 0; i < end.size(); ++i) {
+        model::BodyState& state = end[i];
+        const BodyDerivative& d = startDerivative[i];
         // Velocity first, then position with the *new* velocity: the symplectic order.
-        body.state.velocity += h * d.acceleration;
-        body.state.angularVelocity += h * d.angularAcceleration;
-        body.state.position += h * body.state.velocity;
-        body.state.angle += h * body.state.angularVelocity;
+        state.velocity += h * d.acceleration;
+        state.angularVelocity += h * d.angularAcceleration;
+        state.position += h * state.velocity;
+        state.angle += h * state.angularVelocity;
     }
 }
 

@@ -1,6 +1,7 @@
 #include "controller/simulation.h"
 
 #include "controller/narrow_phase.h"
+#include "controller/soft_body_builder.h"
 
 #include <algorithm>
 #include <chrono>
@@ -42,9 +43,57 @@ Integrator& Simulation::integratorFor(model::IntegratorKind kind)
     return *m_rk4;
 }
 
+void Simulation::setUpSolverBodies(const model::World& world)
+{
+    const std::size_t n = world.bodies.size();
+    m_bodies.resize(m_startStates.size());
+    m_entries.resize(m_startStates.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Body& body = world.bodies[i];
+        m_entries[i] = body.fixed ? Entry::Fixed : Entry::Rigid;
+        SolverBody& sb = m_bodies[i];
+        sb = SolverBody{};
+        sb.position = body.state.position;
+        sb.angle = body.state.angle;
+        sb.invMass = body.invMass;
+        sb.invInertia = body.invInertia;
+        // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
+        sb.velocity = body.state.velocity;
+        sb.angularVelocity = body.state.angularVelocity;
+    }
+    // A soft body's own solver body is its grid's aggregate: only joints act on it (contacts act
+    // on the ellipses), and what they do is handed on to the ellipses (shareJointMotion).
+    m_softAggregates.resize(world.softBodies.size());
+    std::size_t next = n;
+    for (std::size_t g = 0; g < world.softBodies.size(); ++g) {
+        const model::SoftGrid& grid = world.softBodies[g];
+        const std::uint32_t owner = grid.body.index;
+        m_entries[owner] = Entry::SoftOwner;
+        // Its state is already the grid's aggregate (updateSoftOwners, placeSoftGrid); joints
+        // also need the grid's present moment of inertia, which takes a pass over the ellipses.
+        if (!world.joints.empty()) {
+            const SoftAggregate a =
+                softAggregate(grid, grid.positions, grid.velocities, world.bodies[owner].state.angle);
+            m_bodies[owner].invInertia = a.inertia > 0 ? 1 / a.inertia : 0;
+        }
+        m_softAggregates[g] = m_bodies[owner];
+        const Scalar invMass = 1 / grid.ellipseMass;
+        for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
+            m_entries[next] = Entry::Ellipse;
+            SolverBody& e = m_bodies[next];
+            e = SolverBody{};
+            e.position = grid.positions[i];
+            e.velocity = grid.velocities[i];
+            // Ellipses do not spin: they are points of the grid, whose rotation is the springs'.
+            e.invMass = invMass;
+        }
+    }
+}
+
 void Simulation::collide(const model::World& world, Scalar h)
 {
     const Clock::time_point broadStart = Clock::now();
+    const std::size_t n = world.bodies.size();
     // Each body's speculative margin: how far its surface can move in one step (translation,
     // rotation at its bounding radius, and what its acceleration adds), plus a constant margin so
     // that resting contacts exist before the surfaces touch.
@@ -57,8 +106,10 @@ void Simulation::collide(const model::World& world, Scalar h)
             fastest = std::max(fastest, body.state.velocity.norm() +
                                             std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
     }
-    m_margins.assign(world.bodies.size(), constants::kSpeculativeMargin);
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    for (std::size_t i = n; i < m_startStates.size(); ++i)
+        fastest = std::max(fastest, m_startStates[i].velocity.norm());
+    m_margins.assign(n, constants::kSpeculativeMargin);
+    for (std::size_t i = 0; i < n; ++i) {
         const model::Body& body = world.bodies[i];
         const model::BodyState& s = body.state;
         const BodyDerivative& d = m_startDerivatives[i];
@@ -67,13 +118,27 @@ void Simulation::collide(const model::World& world, Scalar h)
         if (!body.fixed)
             m_margins[i] += 2 * h * fastest;
     }
+    // A soft body's pieces are its ellipses: its margin is the farthest any of them can move.
+    std::size_t next = n;
+    for (const model::SoftGrid& grid : world.softBodies) {
+        Scalar travel = 0;
+        for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
+            travel = std::max(travel, h * m_startStates[next].velocity.norm() +
+                                          h * h * m_startDerivatives[next].acceleration.norm());
+        }
+        m_margins[grid.body.index] = constants::kSpeculativeMargin + travel + 2 * h * fastest;
+    }
     m_colliders.build(world, m_margins);
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
-    m_proxies.resize(pieces.size());
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-        m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
-    m_broadPhase.findPairs(m_proxies, m_pairs);
-    m_profile.broadMs = millisecondsSince(broadStart);
+    if (world.softBodies.empty()) {
+        m_proxies.resize(pieces.size());
+        for (std::size_t i = 0; i < pieces.size(); ++i)
+            m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
+        m_broadPhase.findPairs(m_proxies, m_pairs);
+    } else {
+        findPairsWithSoftBodies(world);
+    }
+    m_profile.broadMs += millisecondsSince(broadStart);
 
     const Clock::time_point narrowStart = Clock::now();
     // Each pair's manifold goes to its own slot, so a large world's pairs can be split between
@@ -99,29 +164,91 @@ void Simulation::collide(const model::World& world, Scalar h)
             continue;
         const ColliderPiece& a = pieces[m_pairs[k].first];
         const ColliderPiece& b = pieces[m_pairs[k].second];
-        m_manifolds.push_back({a.body, a.piece, b.body, b.piece, m_pairManifolds[k]});
+        m_manifolds.push_back({a.solver, a.piece, b.solver, b.piece, m_pairManifolds[k], a.body, b.body});
     }
-    m_profile.narrowMs = millisecondsSince(narrowStart);
+    m_profile.narrowMs += millisecondsSince(narrowStart);
 }
 
-void Simulation::integratePositions(model::World& world, Scalar h)
+void Simulation::findPairsWithSoftBodies(const model::World& world)
+{
+    // Two levels. The broad phase sees each soft body as one box around its ellipses (so it never
+    // sweeps past the thousands of neighbouring ellipses of one body, which never collide), next
+    // to every rigid piece. Then, for each pair of boxes that involves a soft body, the ellipses
+    // whose boxes reach into the other's box are paired with it (or with each other's).
+    const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
+    const std::vector<Aabb>& boxes = m_colliders.boxes();
+    m_proxies.clear();
+    m_proxyPieces.clear();
+    for (std::uint32_t i = 0; i < pieces.size();) {
+        const std::uint32_t body = pieces[i].body;
+        std::uint32_t end = i + 1;
+        Aabb box = boxes[i];
+        if (world.softGrid(model::BodyId{body})) {
+            while (end < pieces.size() && pieces[end].body == body) {
+                box.lower = box.lower.cwiseMin(boxes[end].lower);
+                box.upper = box.upper.cwiseMax(boxes[end].upper);
+                ++end;
+            }
+        }
+        m_proxies.push_back(BroadPhaseProxy{box, body, world.bodies[body].fixed});
+        m_proxyPieces.push_back({i, end});
+        i = end;
+    }
+    m_broadPhase.findPairs(m_proxies, m_coarsePairs);
+
+    m_pairs.clear();
+    std::vector<std::uint32_t>& nearA = m_nearA;
+    std::vector<std::uint32_t>& nearB = m_nearB;
+    for (const ProxyPair& coarse : m_coarsePairs) {
+        const auto [firstA, endA] = m_proxyPieces[coarse.first];
+        const auto [firstB, endB] = m_proxyPieces[coarse.second];
+        if (endA - firstA == 1 && endB - firstB == 1) {
+            m_pairs.push_back({firstA, firstB});
+            continue;
+        }
+        // The pieces of each side that reach into the other side's box, then every pair of them
+        // whose boxes overlap.
+        nearA.clear();
+        nearB.clear();
+        for (std::uint32_t a = firstA; a < endA; ++a) {
+            if (boxes[a].overlaps(m_proxies[coarse.second].box))
+                nearA.push_back(a);
+        }
+        for (std::uint32_t b = firstB; b < endB; ++b) {
+            if (boxes[b].overlaps(m_proxies[coarse.first].box))
+                nearB.push_back(b);
+        }
+        for (const std::uint32_t a : nearA) {
+            for (const std::uint32_t b : nearB) {
+                if (boxes[a].overlaps(boxes[b]))
+                    m_pairs.push_back({a, b});
+            }
+        }
+    }
+    // The broad phase's order, (first, second), whatever order the coarse pairs came in.
+    std::sort(m_pairs.begin(), m_pairs.end());
+}
+
+void Simulation::integratePositions(Scalar h)
 {
     // Two ways to finish a body's step (docs/physics.md, "Contacts"):
     //  - bodies held by contact forces or joints: semi-implicit Euler, x = x₀ + h·v, the
     //    position that matches the constrained velocity (a resting body stays exactly at rest);
     //  - all others keep the integrator's position (RK4 stays exact in free flight), moved by
     //    what their impacts changed after the time of impact.
-    // Either way an impact at τ·h moves the body only for the remaining (1 − τ)·h.
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-        model::Body& body = world.bodies[i];
+    // Either way an impact at τ·h moves the body only for the remaining (1 − τ)·h. Soft grids'
+    // ellipses are finished the same way; a soft body's own entry follows its grid afterwards.
+    for (std::size_t i = 0; i < m_endStates.size(); ++i) {
         SolverBody& sb = m_bodies[i];
-        model::BodyState& s = body.state;
-        if (body.fixed) {
+        model::BodyState& s = m_endStates[i];
+        if (m_entries[i] == Entry::Fixed) {
             // The integrator moved it with its own velocity; position correction must see that.
             sb.position = s.position;
             sb.angle = s.angle;
             continue;
         }
+        if (m_entries[i] == Entry::SoftOwner)
+            continue;
         const model::BodyState& start = m_startStates[i];
         if (sb.hadContactForce) {
             // Until its first impact the body moved with its start velocity, then with its final
@@ -142,28 +269,67 @@ void Simulation::integratePositions(model::World& world, Scalar h)
     }
 }
 
-void Simulation::step(model::World& world)
+void Simulation::syncSoftAggregates(const model::World& world)
 {
-    const Clock::time_point stepStart = Clock::now();
-    const Scalar h = world.settings.timeStep;
-    const std::size_t n = world.bodies.size();
+    std::size_t next = world.bodies.size();
+    for (std::size_t g = 0; g < world.softBodies.size(); ++g) {
+        const model::SoftGrid& grid = world.softBodies[g];
+        m_scratchPositions.resize(grid.size());
+        m_scratchVelocities.resize(grid.size());
+        for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
+            m_scratchPositions[i] = m_bodies[next].position;
+            m_scratchVelocities[i] = m_bodies[next].velocity;
+        }
+        const SoftAggregate a = softAggregate(grid, m_scratchPositions, m_scratchVelocities,
+                                              world.bodies[grid.body.index].state.angle);
+        SolverBody& owner = m_bodies[grid.body.index];
+        owner.position = a.position;
+        owner.angle = a.angle;
+        owner.velocity = a.velocity;
+        owner.angularVelocity = a.angularVelocity;
+        m_softAggregates[g] = owner;
+    }
+}
+
+void Simulation::shareJointMotion(const model::World& world, bool positions)
+{
+    std::size_t next = world.bodies.size();
+    for (std::size_t g = 0; g < world.softBodies.size(); ++g) {
+        const model::SoftGrid& grid = world.softBodies[g];
+        SolverBody& owner = m_bodies[grid.body.index];
+        const SolverBody& before = m_softAggregates[g];
+        const auto first = static_cast<std::ptrdiff_t>(next);
+        next += grid.size();
+        if (positions) {
+            const Vec2 shift = owner.position - before.position;
+            const Scalar turn = owner.angle - before.angle;
+            if (shift.isZero() && turn == 0)
+                continue;
+            for (auto i = static_cast<std::size_t>(first); i < next; ++i) {
+                SolverBody& e = m_bodies[i];
+                e.position = owner.position + rotate(Vec2(e.position - before.position), turn);
+            }
+        } else {
+            const Vec2 dv = owner.velocity - before.velocity;
+            const Scalar dw = owner.angularVelocity - before.angularVelocity;
+            if (dv.isZero() && dw == 0)
+                continue;
+            for (auto i = static_cast<std::size_t>(first); i < next; ++i) {
+                SolverBody& e = m_bodies[i];
+                e.velocity += dv + cross(dw, Vec2(e.position - before.position));
+                e.hadContactForce = true;
+            }
+        }
+    }
+}
+
+void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
+{
+    const std::size_t total = stateCount(world);
 
     // Phase 0: the start of the step, as the solvers see it.
-    m_startStates.resize(n);
-    m_bodies.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const model::Body& body = world.bodies[i];
-        m_startStates[i] = body.state;
-        SolverBody& sb = m_bodies[i];
-        sb = SolverBody{};
-        sb.position = body.state.position;
-        sb.angle = body.state.angle;
-        sb.invMass = body.invMass;
-        sb.invInertia = body.invInertia;
-        // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
-        sb.velocity = body.state.velocity;
-        sb.angularVelocity = body.state.angularVelocity;
-    }
+    gatherStates(world, m_startStates);
+    setUpSolverBodies(world);
     computeDerivatives(world, m_startStates, m_startDerivatives);
 
     // Phase 1: collision detection at the start-of-step poses, with speculative margins.
@@ -174,27 +340,29 @@ void Simulation::step(model::World& world)
     m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives);
     m_contactSolver.partition(m_bodies);
     m_jointSolver.prepare(world, m_bodies);
-    m_profile.prepareMs = millisecondsSince(solveStart);
+    m_profile.prepareMs += millisecondsSince(solveStart);
     const Clock::time_point impactsStart = Clock::now();
-    m_profile.impacts = m_contactSolver.solveImpacts(m_bodies, h);
-    m_profile.contacts = static_cast<int>(m_contactSolver.constraints().size());
-    m_profile.impactsMs = millisecondsSince(impactsStart);
+    m_profile.impacts += m_contactSolver.solveImpacts(m_bodies, h);
+    m_profile.contacts += static_cast<int>(m_contactSolver.constraints().size());
+    m_profile.impactsMs += millisecondsSince(impactsStart);
     double solveMs = millisecondsSince(solveStart);
 
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
-    integratorFor(world.settings.integrator).integrate(world, h);
-    m_profile.integrateMs = millisecondsSince(integrateStart);
+    integratorFor(world.settings.integrator).step(world, m_startStates, m_startDerivatives, h, m_endStates);
+    m_profile.integrateMs += millisecondsSince(integrateStart);
 
     // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
     const Clock::time_point velocityStart = Clock::now();
-    for (std::size_t i = 0; i < n; ++i) {
-        if (world.bodies[i].fixed)
+    for (std::size_t i = 0; i < total; ++i) {
+        if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
             continue;
         SolverBody& sb = m_bodies[i];
-        sb.velocity += world.bodies[i].state.velocity - m_startStates[i].velocity;
-        sb.angularVelocity += world.bodies[i].state.angularVelocity - m_startStates[i].angularVelocity;
+        sb.velocity += m_endStates[i].velocity - m_startStates[i].velocity;
+        sb.angularVelocity += m_endStates[i].angularVelocity - m_startStates[i].angularVelocity;
     }
+    if (!world.softBodies.empty() && !m_jointSolver.empty())
+        syncSoftAggregates(world);
     m_jointSolver.warmStart(m_bodies);
     m_contactSolver.warmStart(m_bodies, h);
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
@@ -202,37 +370,65 @@ void Simulation::step(model::World& world)
         m_contactSolver.solveVelocities(m_bodies);
     }
     m_contactSolver.finishVelocities(m_bodies);
-    m_profile.velocityMs = millisecondsSince(velocityStart);
+    if (!world.softBodies.empty() && !m_jointSolver.empty())
+        shareJointMotion(world, false);
+    m_profile.velocityMs += millisecondsSince(velocityStart);
     const Clock::time_point positionStart = Clock::now();
 
     // Phase 5: positions, then position correction (moves bodies, never touches velocities).
-    integratePositions(world, h);
+    integratePositions(h);
+    if (!world.softBodies.empty() && !m_jointSolver.empty())
+        syncSoftAggregates(world);
     for (int i = 0; i < m_settings.positionIterations; ++i) {
         const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
         const bool contactsOk = m_contactSolver.solvePositions(m_bodies);
         if (jointsOk && contactsOk)
             break;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (world.bodies[i].fixed)
+    if (!world.softBodies.empty() && !m_jointSolver.empty())
+        shareJointMotion(world, true);
+    for (std::size_t i = 0; i < total; ++i) {
+        if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
             continue;
-        world.bodies[i].state.position = m_bodies[i].position;
-        world.bodies[i].state.angle = m_bodies[i].angle;
+        m_endStates[i].position = m_bodies[i].position;
+        m_endStates[i].angle = m_bodies[i].angle;
     }
-    m_profile.positionMs = millisecondsSince(positionStart);
+    m_profile.positionMs += millisecondsSince(positionStart);
+    scatterStates(world, m_endStates);
+    updateSoftOwners(world);
     solveMs += millisecondsSince(velocityStart);
-    m_profile.solveMs = solveMs;
+    m_profile.solveMs += solveMs;
 
     // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start).
-    world.time += h;
-    ++world.stepCount;
+    world.time = endTime;
     const Clock::time_point eventsStart = Clock::now();
     // The last step's records move aside and their buffer takes this step's: two buffers take
     // turns, so a large world's records are not allocated afresh every step.
     m_previousContacts.swap(world.contacts);
-    m_events = updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts);
-    m_profile.eventsMs = millisecondsSince(eventsStart);
+    const std::vector<CollisionEvent> events =
+        updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts);
+    m_events.insert(m_events.end(), events.begin(), events.end());
+    m_profile.eventsMs += millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
+}
+
+void Simulation::step(model::World& world)
+{
+    const Clock::time_point stepStart = Clock::now();
+    prepareSoftBodies(world);
+    m_stability = softStability(world);
+    m_profile = StepProfile{};
+    m_events.clear();
+
+    const Scalar h = world.settings.timeStep;
+    const int substeps = m_stability.substeps;
+    const Scalar startTime = world.time;
+    for (int k = 1; k <= substeps; ++k) {
+        // The last substep lands exactly on t + h, whatever the rounding of h/substeps.
+        const Scalar endTime = k == substeps ? startTime + h : startTime + k * (h / substeps);
+        substep(world, h / substeps, endTime);
+    }
+    ++world.stepCount;
     for (model::Joint& joint : world.joints) {
         // Keep a pin between two bodies at the hinge's current place, so that saving mid-run writes
         // a scene that loads to this state. A pin to the world keeps its fixed pivot.

@@ -8,6 +8,7 @@
 #include "controller/contact_solver.h"
 #include "controller/integrator.h"
 #include "controller/joint_solver.h"
+#include "controller/soft_stability.h"
 #include "controller/task_pair.h"
 #include "model/constants.h"
 #include "model/world.h"
@@ -44,7 +45,10 @@ struct SolverSettings {
     bool secondThread = true;
 };
 
-/// Steps a world with its fixed time step. Holds only scratch state (buffers, the broad phase's
+/// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built
+/// into grids on the first step that needs them (prepareSoftBodies), and a step is split into
+/// equal substeps when a grid is too stiff for the integrator at the world's step (softStability).
+/// Each substep runs every phase below. Holds only scratch state (buffers, the broad phase's
 /// sort order), so one Simulation can step any world; the world itself carries everything
 /// physical, including the contact impulses that warm-start the next step.
 class Simulation {
@@ -55,16 +59,33 @@ public:
     /// resolving collisions, contacts and joints.
     void step(model::World& world);
 
-    /// Timing of the last step().
+    /// Timing of the last step() (summed over its substeps).
     const StepProfile& profile() const { return m_profile; }
 
     /// The contacts that began in the last step (the collision log's new entries).
     const std::vector<CollisionEvent>& events() const { return m_events; }
 
+    /// The substeps of the last step and why (one, with no message, without soft bodies).
+    const SoftStability& stability() const { return m_stability; }
+
 private:
+    /// What an entry of the world's state list is, for the solvers.
+    enum class Entry : std::uint8_t { Rigid, Fixed, SoftOwner, Ellipse };
+
     Integrator& integratorFor(model::IntegratorKind kind);
+    /// One pass of every phase over h seconds, ending at simulated time endTime.
+    void substep(model::World& world, Scalar h, Scalar endTime);
+    void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);
-    void integratePositions(model::World& world, Scalar h);
+    /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
+    void findPairsWithSoftBodies(const model::World& world);
+    void integratePositions(Scalar h);
+    /// Sets each soft body's solver body (and m_softAggregates) to the aggregate of its
+    /// ellipses' solver bodies: where the joints see it.
+    void syncSoftAggregates(const model::World& world);
+    /// Hands what joints did to a soft body's aggregate on to its ellipses, as a rigid motion:
+    /// velocities (positions = false) or positions (true).
+    void shareJointMotion(const model::World& world, bool positions);
 
     SolverSettings m_settings;
     std::vector<Manifold> m_pairManifolds; ///< one per broad-phase pair, filled by both threads
@@ -78,11 +99,22 @@ private:
 
     // Scratch, reused from step to step.
     std::vector<model::BodyState> m_startStates;
+    std::vector<model::BodyState> m_endStates;
     std::vector<BodyDerivative> m_startDerivatives;
-    std::vector<SolverBody> m_bodies;
+    std::vector<SolverBody> m_bodies; ///< one per state-list entry (bodies, then soft ellipses)
+    std::vector<Entry> m_entries;
+    /// Per soft grid: its aggregate pose and velocity as the joint solver was handed it.
+    std::vector<SolverBody> m_softAggregates;
+    SoftStability m_stability;
+    std::vector<Vec2> m_scratchPositions;
+    std::vector<Vec2> m_scratchVelocities;
     std::vector<Scalar> m_margins;
     std::vector<BroadPhaseProxy> m_proxies;
     std::vector<ProxyPair> m_pairs;
+    std::vector<ProxyPair> m_coarsePairs; ///< with soft bodies: pairs of bodies or rigid pieces
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_proxyPieces; ///< per coarse proxy: its pieces
+    std::vector<std::uint32_t> m_nearA;
+    std::vector<std::uint32_t> m_nearB;
     std::vector<ContactSolver::PairManifold> m_manifolds;
     ColliderSet m_colliders;
     BroadPhase m_broadPhase;

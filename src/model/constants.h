@@ -154,4 +154,66 @@ inline constexpr Scalar kContactNormalSearchTolerance = 1e-12;
 /// kContactNormalSearchTolerance takes 35 steps; the cap only guards against NaN brackets.
 inline constexpr int kContactNormalSearchMaxIterations = 100;
 
+// --- Soft mode (controller/soft_body_builder, soft_stability, soft_density) ----------------------
+
+/// The densities "auto" chooses from, ellipses per m², lowest first. Powers of two from seed S1's
+/// 64 (collisions look right) up to 1024 (16 times finer): each step doubles the cost.
+inline constexpr Scalar kSoftAutoDensities[] = {64, 128, 256, 512, 1024};
+
+/// A 60 Hz display frame, s: "auto" asks that simulating this much time fit in the budget below.
+inline constexpr Scalar kSoftFrameTime = 1.0 / 60.0;
+
+/// Fraction of a frame's wall time that simulating one frame may take under "auto": half leaves
+/// the other half for drawing and for the machine's other work.
+inline constexpr Scalar kSoftFrameBudgetFraction = 0.5;
+
+/// Frames of trial simulation per candidate density when "auto" measures; the fastest one counts
+/// (the first pays for allocations and cold caches).
+inline constexpr int kSoftAutoTrialFrames = 3;
+
+/// Largest |λ|·h at which RK4 is used on a soft grid, with λ the fastest grid eigenvalue. RK4's
+/// stability region reaches 2.83 along the imaginary axis and 2.79 along the negative real axis;
+/// 2.5 keeps a margin for the bound's looseness in between.
+inline constexpr Scalar kRk4SoftStabilityLimit = 2.5;
+
+/// Semi-implicit Euler is stable on a damped oscillator when ω²h² + 2·γ·h < 4 (γ the damping rate
+/// c/m); the soft grid is stepped so that the left side stays below this, i.e. (0.9·2)².
+inline constexpr Scalar kSemiImplicitEulerSoftStabilityLimit = 3.24;
+
+/// An ellipse held by a contact force ends its step at x₀ + h·v (so that it rests exactly, as a
+/// rigid body does): semi-implicit Euler's position update, stable while ω·h < 2. Every soft grid
+/// is therefore stepped with ω·h at most this, whatever the integrator (0.9 of the limit).
+/// Measured: a resting 256/m² box keeps a residual jitter of ~1e-6 J here and ~1e-7 J at half of it.
+inline constexpr Scalar kSoftContactStabilityLimit = 1.8;
+
+/// Explicit Euler is stable on a damped oscillator only while h ≤ 2ζ/ω, which for the grid's
+/// damping (proportional to its stiffness) is h ≤ c/k, and h ≤ 2/γ for overdamped motion. The step
+/// is kept at this fraction of those limits.
+inline constexpr Scalar kExplicitEulerSoftSafety = 0.9;
+
+/// Most substeps one step is split into for a soft grid. Beyond it the grid is too stiff for the
+/// step (or explicit Euler has no damping to be stable with) and the user is told so; 64 substeps
+/// of the default 1/240 s step are 65 µs.
+inline constexpr int kMaxSoftSubsteps = 64;
+
+/// Rate of the soft grids' internal damping, 1/s: every ellipse feels F = −β·m·(v − v_rigid),
+/// where v_rigid is the velocity it would have if the grid moved rigidly (the aggregate's v + ω × r).
+/// It damps every deformation alike and leaves the body's translation and rotation alone (the
+/// forces sum to zero and have zero torque about the centre of mass). The springs' own damping is
+/// stiffness-proportional and hardly touches the slow wobble of a large grid; 5/s lets that wobble
+/// lose its energy (∝ e^(−2βt)) within about half a second without making impacts look viscous.
+inline constexpr Scalar kSoftInternalDampingRate = 5.0;
+
+/// Shape matching of the soft grids: the whole body is pulled back to its rest shape (moved and
+/// turned by its best-fit rigid motion) with this many times the stiffness of its grid springs.
+/// Springs alone hold a grid under moderate loads, but a soft grid crushed hard (500 N/m under
+/// 20 kg) folds: ellipses pass between their neighbours, cells turn inside out, and the springs
+/// then hold the folded shape for good (KDE Step's "lose their internal structure"). The goal
+/// positions do not care how tangled the grid is, so they always pull it back out; 10 keeps a
+/// 500 N/m box from folding under 20 kg and adds only ~10% to a 2000 N/m box's stiffness.
+inline constexpr Scalar kSoftShapeMatching = 10.0;
+
+/// Points on the outline of a round soft body (circle, ellipse) mapped through its grid.
+inline constexpr int kSoftRoundOutlinePoints = 64;
+
 } // namespace impetus::constants

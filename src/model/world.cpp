@@ -34,4 +34,13 @@ std::optional<BodyId> World::findBody(std::string_view name) const
     return std::nullopt;
 }
 
+const SoftGrid* World::softGrid(BodyId id) const
+{
+    for (const SoftGrid& grid : softBodies) {
+        if (grid.body == id)
+            return &grid;
+    }
+    return nullptr;
+}
+
 } // namespace impetus::model

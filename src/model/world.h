@@ -7,6 +7,7 @@
 #include "model/constants.h"
 #include "model/joint.h"
 #include "model/scalar.h"
+#include "model/soft_grid.h"
 #include "model/spring.h"
 
 #include <array>
@@ -66,6 +67,9 @@ struct World {
     std::int64_t collisionCount = 0; ///< contact-begin events since the scene was loaded
     /// Contacts at the end of the last step, sorted by (bodyA, pieceA, bodyB, pieceB).
     std::vector<ContactRecord> contacts;
+    /// The grids of the soft bodies, sorted by body index: runtime state, not part of the scene
+    /// file. Built and kept up to date by controller::prepareSoftBodies (Simulation::step calls it).
+    std::vector<SoftGrid> softBodies;
 
     bool operator==(const World&) const = default;
 
@@ -75,6 +79,9 @@ struct World {
     /// The body with id `id`. Precondition: id.index < bodies.size().
     Body& body(BodyId id) { return bodies[id.index]; }
     const Body& body(BodyId id) const { return bodies[id.index]; }
+
+    /// The grid of soft body `id`, or nullptr when it has none (rigid, or not prepared yet).
+    const SoftGrid* softGrid(BodyId id) const;
 };
 
 } // namespace impetus::model

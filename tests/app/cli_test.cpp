@@ -338,4 +338,61 @@ TEST_F(Cli, HelpExitsZero)
     EXPECT_NE(r.out.find("impetus-cli run SCENE.json"), std::string::npos);
 }
 
+// Soft mode: the summary reports a soft body's centre of mass, velocity and ellipse count; the
+// substeps its springs need are noted on stderr.
+TEST_F(Cli, SummaryShowsASoftBodysEllipsesAndCentreOfMass)
+{
+    // 0.25 s of free fall from y = 2 with v = (1, 0): the centre of mass is the projectile's.
+    const CliResult r = run({"run", dataFile("soft.json"), "--steps", "60", "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("substeps"), std::string::npos) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(r.out);
+    const nlohmann::json& jelly = s["bodies"][1];
+    EXPECT_EQ(jelly["name"], "jelly");
+    EXPECT_EQ(jelly["ellipses"], 64);
+    EXPECT_EQ(jelly["ellipsesPerSquareMeter"], 64);
+    EXPECT_NEAR(jelly["position"][0].get<double>(), 0.25, 1e-9);
+    EXPECT_NEAR(jelly["position"][1].get<double>(), 2 - 0.5 * 9.81 * 0.0625, 1e-9);
+    EXPECT_NEAR(jelly["velocity"][0].get<double>(), 1, 1e-9);
+    EXPECT_NEAR(jelly["velocity"][1].get<double>(), -9.81 * 0.25, 1e-9);
+    EXPECT_NEAR(jelly["mass"].get<double>(), 1, 1e-15);
+    EXPECT_EQ(s["bodies"][2]["ellipses"], 0);
+    EXPECT_FALSE(s["bodies"][2].contains("ellipsesPerSquareMeter"));
+
+    // Landing: one contact-begin for the body, not one per ellipse.
+    const CliResult landed = run({"run", dataFile("soft.json"), "--time", "0.6", "--summary", "-"});
+    ASSERT_EQ(landed.exitCode, 0) << landed.err;
+    const nlohmann::json t = nlohmann::json::parse(landed.out);
+    EXPECT_EQ(t["bodies"][1]["collisions"], 1);
+    EXPECT_EQ(t["collisions"], 2); // and the ball, which starts on the ground
+}
+
+TEST_F(Cli, CompareRigidPrintsTheDeviationOverTime)
+{
+    const CliResult r = run({"run", dataFile("soft.json"), "--steps", "240", "--sample-every", "24",
+                             "--compare-rigid", "jelly"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    std::vector<std::string> rows;
+    bool header = false;
+    std::string closing;
+    while (std::getline(lines, line)) {
+        if (line == "time,rigidX,rigidY,softX,softY,distance")
+            header = true;
+        else if (header && !line.empty() && line[0] == '#')
+            closing = line;
+        else if (header)
+            rows.push_back(line);
+    }
+    ASSERT_TRUE(header) << r.out;
+    EXPECT_EQ(rows.size(), 11u); // t = 0 and every 24 steps
+    EXPECT_EQ(rows.front(), "0,0,2,0,2,0");
+    EXPECT_NE(closing.find("rms distance"), std::string::npos) << closing;
+
+    const CliResult unknown = run({"run", dataFile("soft.json"), "--steps", "1", "--compare-rigid", "nobody"});
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("nobody"), std::string::npos) << unknown.err;
+}
+
 } // namespace

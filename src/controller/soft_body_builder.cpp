@@ -1,0 +1,319 @@
+#include "controller/soft_body_builder.h"
+
+#include "controller/soft_density.h"
+#include "model/constants.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <variant>
+
+namespace impetus::controller {
+
+namespace {
+
+/// The shape's bounding box in the body frame (origin at the centroid): lower and upper corners.
+std::pair<Vec2, Vec2> boundsOf(const model::Body& body)
+{
+    if (const auto* circle = std::get_if<model::Circle>(&body.shape))
+        return {Vec2::Constant(-circle->radius), Vec2::Constant(circle->radius)};
+    if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
+        return {Vec2(-ellipse->radiusX, -ellipse->radiusY), Vec2(ellipse->radiusX, ellipse->radiusY)};
+    if (const auto* box = std::get_if<model::Box>(&body.shape))
+        return {Vec2(-box->width / 2, -box->height / 2), Vec2(box->width / 2, box->height / 2)};
+    Vec2 lower = Vec2::Constant(INFINITY);
+    Vec2 upper = Vec2::Constant(-INFINITY);
+    for (const Vec2& v : body.geometry.outline) {
+        lower = lower.cwiseMin(v);
+        upper = upper.cwiseMax(v);
+    }
+    return {lower, upper};
+}
+
+/// Whether body-frame point p lies inside the shape. Polygons by the crossing number, which works
+/// for concave ones too.
+bool contains(const model::Body& body, const Vec2& p)
+{
+    if (const auto* circle = std::get_if<model::Circle>(&body.shape))
+        return p.squaredNorm() < circle->radius * circle->radius;
+    if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape)) {
+        const Scalar x = p.x() / ellipse->radiusX;
+        const Scalar y = p.y() / ellipse->radiusY;
+        return x * x + y * y < 1;
+    }
+    if (const auto* box = std::get_if<model::Box>(&body.shape))
+        return std::abs(p.x()) < box->width / 2 && std::abs(p.y()) < box->height / 2;
+    const std::vector<Vec2>& outline = body.geometry.outline;
+    bool inside = false;
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+        const Vec2& a = outline[i];
+        const Vec2& b = outline[j];
+        if ((a.y() > p.y()) != (b.y() > p.y())) {
+            const Scalar x = a.x() + (p.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+            if (p.x() < x)
+                inside = !inside;
+        }
+    }
+    return inside;
+}
+
+/// Largest eigenvalue of the symmetric 2×2 matrix [[xx, xy], [xy, yy]].
+Scalar largestEigenvalue(Scalar xx, Scalar xy, Scalar yy)
+{
+    const Scalar mean = 0.5 * (xx + yy);
+    const Scalar half = 0.5 * (xx - yy);
+    return mean + std::sqrt(half * half + xy * xy);
+}
+
+/// The body's mass, from its grid.
+Scalar massOf(const model::SoftGrid& grid) { return grid.ellipseMass * static_cast<Scalar>(grid.size()); }
+
+/// Fills grid.maxSpringRate and maxDampingRate. The stiffness matrix K of the grid is made of 2×2
+/// blocks k·u·uᵀ; by Gershgorin's theorem on blocks, λmax(M⁻¹K) ≤ max over ellipses of
+/// 2·λmax(Σ k·u·uᵀ)/m, which is exact for the fastest mode of a uniform square lattice (8k/m).
+void computeRates(model::SoftGrid& grid)
+{
+    struct Block {
+        Scalar xx = 0, xy = 0, yy = 0;
+    };
+    std::vector<Block> stiffness(grid.size());
+    std::vector<Block> damping(grid.size());
+    for (const model::SoftSpring& s : grid.springs) {
+        const Vec2 d = grid.restPositions[s.b] - grid.restPositions[s.a];
+        const Vec2 u = d / d.norm();
+        for (const std::uint32_t end : {s.a, s.b}) {
+            stiffness[end].xx += s.stiffness * u.x() * u.x();
+            stiffness[end].xy += s.stiffness * u.x() * u.y();
+            stiffness[end].yy += s.stiffness * u.y() * u.y();
+            damping[end].xx += s.damping * u.x() * u.x();
+            damping[end].xy += s.damping * u.x() * u.y();
+            damping[end].yy += s.damping * u.y() * u.y();
+        }
+    }
+    grid.maxSpringRate = 0;
+    grid.maxDampingRate = 0;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        grid.maxSpringRate = std::max(grid.maxSpringRate, 2 * largestEigenvalue(stiffness[i].xx, stiffness[i].xy,
+                                                                                 stiffness[i].yy) / grid.ellipseMass);
+        grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
+                                                                                   damping[i].yy) / grid.ellipseMass);
+    }
+    // The internal damping adds its rate to every ellipse's, and shape matching its k_s/m.
+    grid.maxDampingRate += constants::kSoftInternalDampingRate;
+    grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
+}
+
+/// Whether `grid` still describes `body` (same shape, mass and soft settings).
+bool matches(const model::SoftGrid& grid, const model::Body& body)
+{
+    return body.soft && grid.shape == body.shape && grid.massSpec == body.massSpec && grid.settings == *body.soft;
+}
+
+} // namespace
+
+bool isSoftBody(const model::Body& body) { return body.soft.has_value() && !body.fixed; }
+
+Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body)
+{
+    return constants::kSoftShapeMatching * grid.settings.stiffness * grid.ellipseMass * body.invMass;
+}
+
+model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar ellipsesPerSquareMeter)
+{
+    model::SoftGrid grid;
+    grid.body = id;
+    grid.shape = body.shape;
+    grid.massSpec = body.massSpec;
+    grid.settings = *body.soft;
+    grid.ellipsesPerSquareMeter = ellipsesPerSquareMeter;
+
+    const auto [lower, upper] = boundsOf(body);
+    const Vec2 size = upper - lower;
+    const Scalar perMetre = std::sqrt(ellipsesPerSquareMeter);
+    grid.columns = std::max(1, static_cast<int>(std::lround(size.x() * perMetre)));
+    grid.rows = std::max(1, static_cast<int>(std::lround(size.y() * perMetre)));
+    grid.cellSize = Vec2(size.x() / grid.columns, size.y() / grid.rows);
+    grid.latticeOrigin = lower;
+    grid.cellEllipse.assign(static_cast<std::size_t>(grid.columns * grid.rows), -1);
+
+    std::vector<Vec2> centres;
+    for (int row = 0; row < grid.rows; ++row) {
+        for (int column = 0; column < grid.columns; ++column) {
+            const Vec2 centre = lower + Vec2((column + 0.5) * grid.cellSize.x(), (row + 0.5) * grid.cellSize.y());
+            if (!contains(body, centre))
+                continue;
+            const int cell = row * grid.columns + column;
+            grid.cellEllipse[static_cast<std::size_t>(cell)] = static_cast<std::int32_t>(centres.size());
+            grid.ellipseCell.push_back(cell);
+            centres.push_back(centre);
+        }
+    }
+    if (centres.empty()) {
+        // A shape thinner than a cell everywhere the lattice samples it: one ellipse at the
+        // centroid, in the cell that holds it, keeps the body's mass and motion.
+        const int column = std::clamp(static_cast<int>(-lower.x() / grid.cellSize.x()), 0, grid.columns - 1);
+        const int row = std::clamp(static_cast<int>(-lower.y() / grid.cellSize.y()), 0, grid.rows - 1);
+        const int cell = row * grid.columns + column;
+        grid.cellEllipse[static_cast<std::size_t>(cell)] = 0;
+        grid.ellipseCell.push_back(cell);
+        centres.push_back(Vec2::Zero());
+    }
+
+    Vec2 sum = Vec2::Zero();
+    for (const Vec2& c : centres)
+        sum += c;
+    grid.restCentre = sum / static_cast<Scalar>(centres.size());
+    grid.restPositions.reserve(centres.size());
+    for (const Vec2& c : centres)
+        grid.restPositions.push_back(c - grid.restCentre);
+    grid.ellipseMass = body.mass / static_cast<Scalar>(centres.size());
+
+    // Right and up neighbours (structural), up-right and up-left (shear): every pair once.
+    const model::SoftSettings& soft = *body.soft;
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        const int cell = grid.ellipseCell[i];
+        const int column = cell % grid.columns;
+        const int row = cell / grid.columns;
+        const std::array<std::array<int, 3>, 4> neighbours{{{1, 0, 0}, {0, 1, 0}, {1, 1, 1}, {-1, 1, 1}}};
+        for (const auto& [dc, dr, diagonal] : neighbours) {
+            const std::int32_t j = grid.ellipseAt(column + dc, row + dr);
+            if (j < 0)
+                continue;
+            model::SoftSpring spring;
+            spring.a = static_cast<std::uint32_t>(i);
+            spring.b = static_cast<std::uint32_t>(j);
+            spring.restLength = (centres[static_cast<std::size_t>(j)] - centres[i]).norm();
+            spring.stiffness = soft.stiffness;
+            spring.damping = soft.damping;
+            spring.diagonal = diagonal != 0;
+            grid.springs.push_back(spring);
+        }
+    }
+    computeRates(grid);
+    placeSoftGrid(grid, body.state);
+    return grid;
+}
+
+void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state)
+{
+    const Scalar c = std::cos(state.angle);
+    const Scalar s = std::sin(state.angle);
+    grid.positions.resize(grid.restPositions.size());
+    grid.velocities.resize(grid.restPositions.size());
+    for (std::size_t i = 0; i < grid.restPositions.size(); ++i) {
+        const Vec2& r = grid.restPositions[i];
+        const Vec2 arm(c * r.x() - s * r.y(), s * r.x() + c * r.y());
+        grid.positions[i] = state.position + arm;
+        grid.velocities[i] = state.velocity + cross(state.angularVelocity, arm);
+    }
+    grid.ownerState = state;
+}
+
+SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
+                            std::span<const Vec2> velocities, Scalar referenceAngle)
+{
+    // Every ellipse has the same mass, so means are mass-weighted means.
+    SoftAggregate a;
+    const auto count = static_cast<Scalar>(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        a.position += positions[i];
+        a.velocity += velocities[i];
+    }
+    a.position /= count;
+    a.velocity /= count;
+
+    Scalar dot = 0;
+    Scalar crossSum = 0;
+    Scalar spin = 0;
+    Scalar inertia = 0;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const Vec2 p = positions[i] - a.position;
+        const Vec2& r = grid.restPositions[i];
+        dot += r.dot(p);
+        crossSum += cross(r, p);
+        spin += cross(p, Vec2(velocities[i] - a.velocity));
+        inertia += p.squaredNorm();
+    }
+    const Scalar angle = std::atan2(crossSum, dot);
+    const Scalar turn = 2 * std::numbers::pi;
+    a.angle = angle + turn * std::round((referenceAngle - angle) / turn);
+    a.angularVelocity = inertia > 0 ? spin / inertia : 0;
+    a.inertia = grid.ellipseMass * inertia;
+    return a;
+}
+
+void prepareSoftBodies(model::World& world)
+{
+    // The common case, every step: each soft body has a matching grid at its recorded state.
+    bool current = true;
+    std::size_t g = 0;
+    for (std::uint32_t i = 0; i < world.bodies.size() && current; ++i) {
+        const model::Body& body = world.bodies[i];
+        if (!isSoftBody(body))
+            continue;
+        current = g < world.softBodies.size() && world.softBodies[g].body.index == i &&
+                  matches(world.softBodies[g], body) && world.softBodies[g].ownerState == body.state;
+        ++g;
+    }
+    if (current && g == world.softBodies.size())
+        return;
+
+    std::optional<Scalar> autoChoice;
+    for (const model::SoftGrid& grid : world.softBodies) {
+        if (grid.settings.autoDensity)
+            autoChoice = grid.ellipsesPerSquareMeter;
+    }
+    bool needsAuto = false;
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (!isSoftBody(body) || !body.soft->autoDensity)
+            continue;
+        const model::SoftGrid* grid = world.softGrid(model::BodyId{i});
+        needsAuto = needsAuto || !grid || !matches(*grid, body);
+    }
+    if (needsAuto && !autoChoice)
+        autoChoice = chooseAutoDensity(world);
+
+    std::vector<model::SoftGrid> previous = std::move(world.softBodies);
+    world.softBodies.clear();
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (!isSoftBody(body))
+            continue;
+        const auto old = std::find_if(previous.begin(), previous.end(),
+                                      [&](const model::SoftGrid& grid) { return grid.body.index == i; });
+        if (old != previous.end() && matches(*old, body)) {
+            world.softBodies.push_back(std::move(*old));
+            if (!(world.softBodies.back().ownerState == body.state))
+                placeSoftGrid(world.softBodies.back(), body.state);
+            continue;
+        }
+        const Scalar density = body.soft->autoDensity ? *autoChoice : body.soft->ellipsesPerSquareMeter;
+        world.softBodies.push_back(buildSoftGrid(body, model::BodyId{i}, density));
+    }
+}
+
+void updateSoftOwners(model::World& world)
+{
+    for (model::SoftGrid& grid : world.softBodies) {
+        model::Body& body = world.bodies[grid.body.index];
+        const SoftAggregate a = softAggregate(grid, grid.positions, grid.velocities, body.state.angle);
+        body.state.position = a.position;
+        body.state.angle = a.angle;
+        body.state.velocity = a.velocity;
+        body.state.angularVelocity = a.angularVelocity;
+        grid.ownerState = body.state;
+    }
+}
+
+std::size_t softEllipseOffset(const model::World& world, std::size_t g)
+{
+    std::size_t offset = 0;
+    for (std::size_t k = 0; k < g; ++k)
+        offset += world.softBodies[k].size();
+    return offset;
+}
+
+} // namespace impetus::controller

@@ -1,0 +1,73 @@
+#pragma once
+/// \file soft_body_builder.h
+/// Soft mode: building a body's grid of ellipses and springs, keeping World::softBodies in step
+/// with the bodies, and reading a grid's motion back as the body's state. See docs/physics.md,
+/// "Soft mode".
+
+#include "model/body.h"
+#include "model/scalar.h"
+#include "model/soft_grid.h"
+#include "model/world.h"
+
+#include <span>
+
+namespace impetus::controller {
+
+/// True when `body` is simulated as a grid: it has `soft` and is not fixed (a fixed body feels no
+/// force, so a grid would never deform; a fixed soft body is simulated as a rigid one).
+bool isSoftBody(const model::Body& body);
+
+/// The grid of `body` (World::bodies[id]) at `ellipsesPerSquareMeter` = n (1/m²), placed at the
+/// body's state. The lattice covers the shape's bounding box in the body frame with
+/// round(W·√n) × round(H·√n) cells (at least one each way), so cells are as close to 1/√n square
+/// as the box allows; a cell is kept when its centre lies inside the shape. Each kept cell holds
+/// an ellipse that fills it (semi-axes = half the cell), of mass body.mass / count. Structural
+/// springs join the four neighbours, shear springs the diagonals, all with the body's stiffness
+/// and damping and the rest length of the lattice. Precondition: isSoftBody(body).
+model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar ellipsesPerSquareMeter);
+
+/// Places the grid as a rigid copy of `state`: its centre of mass at state.position, turned by
+/// state.angle, every ellipse moving with v + ω × r. Records `state` as the owner's state.
+void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state);
+
+/// A grid's motion as one body: centre of mass and its velocity, the best-fit rotation and the
+/// angular velocity of the ellipses about the centre of mass.
+struct SoftAggregate {
+    Vec2 position = Vec2::Zero(); ///< centre of mass, m
+    Scalar angle = 0; ///< best-fit rotation from the rest lattice, rad
+    Vec2 velocity = Vec2::Zero(); ///< total momentum / mass, m/s
+    Scalar angularVelocity = 0; ///< angular momentum about the centre / inertia, rad/s
+    Scalar inertia = 0; ///< Σ m·|x − c|² of the ellipses now, kg·m²
+};
+
+/// The aggregate of a grid whose ellipses are at `positions` with `velocities`. The best-fit angle
+/// θ maximises Σ (x − c)·R(θ)·r (r the rest positions): θ = atan2(Σ r × p, Σ r · p), taken in the
+/// turn nearest `referenceAngle` so that a spinning body's angle keeps counting.
+SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
+                            std::span<const Vec2> velocities, Scalar referenceAngle);
+
+/// The shape-matching spring constant of each ellipse of `grid`, N/m: kSoftShapeMatching·k·m/M, so
+/// that the whole body's pull back to its rest shape is kSoftShapeMatching times the grid springs'
+/// stiffness k, at any density. Each ellipse feels F = −k_s·(x − g), with g where the best-fit
+/// rigid motion of the rest lattice puts it (Müller et al. 2005); the forces sum to zero and have
+/// zero torque about the centre of mass, and store ½k_s·|x − g|² (counted as elastic energy).
+Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body);
+
+/// Makes world.softBodies match world.bodies: builds the grid of every soft body that has none,
+/// rebuilds one whose body's shape, mass or soft settings changed, drops grids of bodies that are
+/// no longer soft, and places again (as a rigid copy) the grid of a body whose state was set by
+/// hand. A body with `"auto"` density gets the density measured once per world by
+/// chooseAutoDensity (soft_density.h); later rebuilds reuse that choice. Cheap when nothing
+/// changed, so Simulation::step calls it every step; call it after loading a scene to have the
+/// grids (and the auto choice) before the first step.
+void prepareSoftBodies(model::World& world);
+
+/// Sets every soft body's state to its grid's aggregate (position = centre of mass of its
+/// ellipses, velocity = momentum / mass, angle = best-fit rotation, angular velocity).
+void updateSoftOwners(model::World& world);
+
+/// The ellipses of every grid before grid g, i.e. where g's ellipses start in the world's state
+/// list after the bodies (see force_model.h, stateCount).
+std::size_t softEllipseOffset(const model::World& world, std::size_t g);
+
+} // namespace impetus::controller

@@ -1,0 +1,85 @@
+#pragma once
+/// \file soft_grid.h
+/// The runtime state of a soft body: its grid of ellipses and the springs that join them. Not part
+/// of the scene file; controller::prepareSoftBodies builds it from the body's definition, and the
+/// simulation moves it. A plain value, so a World that holds it still copies with `=`.
+
+#include "model/body.h"
+#include "model/scalar.h"
+#include "model/shape.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impetus::model {
+
+/// A Hooke spring with damping along its length between ellipses `a` and `b` of one soft grid:
+/// tension T = k·(L − L₀) + c·dL/dt.
+struct SoftSpring {
+    std::uint32_t a = 0; ///< ellipse index in the grid
+    std::uint32_t b = 0; ///< ellipse index in the grid
+    Scalar restLength = 0; ///< L₀, m
+    Scalar stiffness = 0; ///< k, N/m
+    Scalar damping = 0; ///< c, N·s/m
+    bool diagonal = false; ///< a shear spring (to a diagonal neighbour), else structural
+    bool operator==(const SoftSpring&) const = default;
+};
+
+/// The grid of one soft body. Ellipse i sits in cell cells[i] = (column, row) of a columns × rows
+/// lattice of cellSize cells; every ellipse has semi-axes cellSize/2 along the body's axes and
+/// mass ellipseMass, so that they share the body's mass.
+struct SoftGrid {
+    BodyId body; ///< the owning body (World::bodies index)
+
+    // What the grid was built from. When the body's definition no longer matches, it is rebuilt.
+    Shape shape;
+    MassSpec massSpec;
+    SoftSettings settings;
+
+    /// The density actually used, 1/m²: settings.ellipsesPerSquareMeter, or the value the auto
+    /// measurement chose when settings.autoDensity.
+    Scalar ellipsesPerSquareMeter = 0;
+    int columns = 0; ///< lattice columns
+    int rows = 0; ///< lattice rows
+    Vec2 cellSize = Vec2::Zero(); ///< cell width and height, m
+    /// Lower-left corner of the lattice in the body frame (origin at the shape's centroid), m.
+    Vec2 latticeOrigin = Vec2::Zero();
+    /// The grid's own centre of mass in the body frame, m: rest positions are measured from it.
+    /// Differs from zero (the shape's centroid) by at most about a cell for an asymmetric shape.
+    Vec2 restCentre = Vec2::Zero();
+    Scalar ellipseMass = 0; ///< mass of every ellipse, kg
+    /// Bound on ω² of the fastest grid vibration, 1/s²: max over ellipses of 2·λmax(Σ k·u·uᵀ)/m.
+    Scalar maxSpringRate = 0;
+    /// The same bound for the spring damping, 1/s: max over ellipses of 2·λmax(Σ c·u·uᵀ)/m.
+    Scalar maxDampingRate = 0;
+
+    std::vector<std::int32_t> cellEllipse; ///< columns × rows, row-major: ellipse index or −1
+    std::vector<std::int32_t> ellipseCell; ///< per ellipse: its cell, row·columns + column
+    std::vector<Vec2> restPositions; ///< ellipse centres relative to restCentre, body frame, m
+    std::vector<SoftSpring> springs;
+
+    // Runtime state.
+    std::vector<Vec2> positions; ///< ellipse centres, world, m
+    std::vector<Vec2> velocities; ///< m/s
+    /// The state last written to the owning body. A body whose state differs was moved by hand
+    /// (the editor), and its grid is placed again as a rigid copy of the new state.
+    BodyState ownerState;
+
+    bool operator==(const SoftGrid&) const = default;
+
+    /// Number of ellipses.
+    std::size_t size() const { return restPositions.size(); }
+
+    /// The ellipse in lattice cell (column, row), or −1 when that cell is empty or outside.
+    std::int32_t ellipseAt(int column, int row) const
+    {
+        if (column < 0 || row < 0 || column >= columns || row >= rows)
+            return -1;
+        return cellEllipse[static_cast<std::size_t>(row * columns + column)];
+    }
+
+    /// Semi-axes of every ellipse, along the body's x and y axes, m.
+    Vec2 semiAxes() const { return 0.5 * cellSize; }
+};
+
+} // namespace impetus::model
