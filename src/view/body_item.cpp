@@ -42,6 +42,7 @@ BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* par
     : QGraphicsItem(parent)
     , m_id(id)
     , m_outline(outlinePath(body))
+    , m_rigidOutline(m_outline)
 {
     if (const auto* circle = std::get_if<model::Circle>(&body.shape))
         m_radiusLine = QLineF(0, 0, circle->radius, 0);
@@ -92,6 +93,25 @@ void BodyItem::setPose(const model::BodyState& state)
     const qreal s = std::sin(state.angle);
     setTransform(QTransform(c, s, -s, c, 0, 0));
     setPos(state.position.x(), state.position.y());
+}
+
+void BodyItem::setDeformedOutline(const std::vector<Vec2>& outline)
+{
+    QPainterPath path;
+    if (outline.size() >= 3) {
+        QPolygonF polygon;
+        polygon.reserve(static_cast<qsizetype>(outline.size()));
+        for (const Vec2& v : outline)
+            polygon << QPointF(v.x(), v.y());
+        path.addPolygon(polygon);
+        path.closeSubpath();
+    } else {
+        path = m_rigidOutline;
+    }
+    if (path == m_outline)
+        return;
+    prepareGeometryChange();
+    m_outline = path;
 }
 
 QPainterPath BodyItem::shape() const { return m_outline; }

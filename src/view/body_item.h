@@ -10,6 +10,8 @@
 #include <QPainterPath>
 #include <QPen>
 
+#include <vector>
+
 namespace impetus::view {
 
 /// Draws one body in its own frame (metres, origin at the centre of mass, y up): a circle or an
@@ -40,6 +42,10 @@ public:
     /// Whether the item is drawn as colliding.
     bool isColliding() const { return m_colliding; }
 
+    /// Draws a soft body deformed: `outline` is its current outline in the body frame (m), as
+    /// controller::softOutline gives it after mapping into the body's best-fit frame. An empty
+    /// outline goes back to the rigid shape.
+    void setDeformedOutline(const std::vector<Vec2>& outline);
     /// Draws a selection outline over the body while `on`.
     void setHighlighted(bool on);
 
@@ -58,7 +64,8 @@ public:
 
 private:
     model::BodyId m_id;
-    QPainterPath m_outline;
+    QPainterPath m_outline; ///< what is drawn: the rigid outline, or the deformed one
+    QPainterPath m_rigidOutline;
     QLineF m_radiusLine; ///< drawn for round shapes; null for polygons
     /// The brushes and pen of one colour scheme.
     struct Look {

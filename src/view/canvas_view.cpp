@@ -1,6 +1,9 @@
 #include "view/canvas_view.h"
 
+#include "controller/soft_body_shape.h"
+
 #include "view/body_item.h"
+#include "view/soft_detail_item.h"
 #include "view/joint_item.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
@@ -158,14 +161,22 @@ void CanvasView::rebuildItems()
     m_bodyItems.clear();
     m_springItems.clear();
     m_jointItems.clear();
+    m_softItems.clear();
 
     const model::World& world = m_runner.world();
     m_bodyItems.reserve(world.bodies.size());
+    m_softItems.assign(world.bodies.size(), nullptr);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::BodyId id{static_cast<std::uint32_t>(i)};
         auto* item = new BodyItem(id, world.bodies[i]);
         m_scene->addItem(item);
         m_bodyItems.push_back(item);
+        if (world.softGrid(id)) {
+            m_softItems[i] = new SoftDetailItem;
+            m_softItems[i]->setParts(m_showSoftEllipses, m_showSoftStrain);
+            m_scene->addItem(m_softItems[i]);
+        }
+        syncSoftBody(i);
     }
     m_springItems.reserve(world.springs.size());
     for (const model::Spring& spring : world.springs) {
@@ -209,6 +220,7 @@ void CanvasView::syncItems()
     for (std::size_t i = 0; i < bodies; ++i) {
         m_bodyItems[i]->setPose(world.bodies[i].state);
         m_bodyItems[i]->setColliding(world.bodies[i].colliding);
+        syncSoftBody(i);
     }
     const std::size_t springs = std::min(world.springs.size(), m_springItems.size());
     for (std::size_t i = 0; i < springs; ++i) {
@@ -220,6 +232,51 @@ void CanvasView::syncItems()
         const auto [a, b] = jointEnds(world, world.joints[i]);
         m_jointItems[i]->setEnds(a, b);
     }
+}
+
+void CanvasView::syncSoftBody(std::size_t i)
+{
+    const model::World& world = m_runner.world();
+    const model::BodyId id{static_cast<std::uint32_t>(i)};
+    const model::SoftGrid* grid = world.softGrid(id);
+    if (!grid || grid->size() == 0 || i >= m_bodyItems.size())
+        return;
+    // The outline comes in world coordinates; the item draws in the body's (best-fit) frame.
+    const model::BodyState& state = world.bodies[i].state;
+    const double c = std::cos(state.angle);
+    const double s = std::sin(state.angle);
+    std::vector<Vec2> outline = controller::softOutline(world, *grid);
+    for (Vec2& p : outline) {
+        const Vec2 d = p - state.position;
+        p = Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+    }
+    m_bodyItems[i]->setDeformedOutline(outline);
+    if (SoftDetailItem* detail = i < m_softItems.size() ? m_softItems[i] : nullptr) {
+        if (m_showSoftEllipses || m_showSoftStrain)
+            detail->setContents(controller::softEllipses(world, *grid), controller::softSprings(*grid));
+    }
+}
+
+void CanvasView::setShowSoftEllipses(bool on)
+{
+    m_showSoftEllipses = on;
+    for (SoftDetailItem* item : m_softItems) {
+        if (item)
+            item->setParts(m_showSoftEllipses, m_showSoftStrain);
+    }
+    for (std::size_t i = 0; i < m_softItems.size(); ++i)
+        syncSoftBody(i);
+}
+
+void CanvasView::setShowSoftStrain(bool on)
+{
+    m_showSoftStrain = on;
+    for (SoftDetailItem* item : m_softItems) {
+        if (item)
+            item->setParts(m_showSoftEllipses, m_showSoftStrain);
+    }
+    for (std::size_t i = 0; i < m_softItems.size(); ++i)
+        syncSoftBody(i);
 }
 
 void CanvasView::showSelection()

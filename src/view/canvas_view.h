@@ -22,6 +22,7 @@ class BodyItem;
 class JointItem;
 class SceneDocument;
 class SimulationRunner;
+class SoftDetailItem;
 class SpringItem;
 
 /// Shows the world of a SimulationRunner. The scene is in metres with y up; the view transform
@@ -57,6 +58,14 @@ public:
 
     /// The spring items, in the order of World::springs.
     const std::vector<SpringItem*>& springItems() const { return m_springItems; }
+
+    /// Per body: the item that draws a soft body's ellipses and strain, or nullptr for a rigid one.
+    const std::vector<SoftDetailItem*>& softItems() const { return m_softItems; }
+    /// Whether soft bodies show their ellipses, and their grid springs coloured by strain.
+    bool showsSoftEllipses() const { return m_showSoftEllipses; }
+    bool showsSoftStrain() const { return m_showSoftStrain; }
+    void setShowSoftEllipses(bool on);
+    void setShowSoftStrain(bool on);
 
     /// The joint items, in the order of World::joints.
     const std::vector<JointItem*>& jointItems() const { return m_jointItems; }
@@ -170,6 +179,9 @@ private:
     QRectF computeFrameRect() const;
     ToolEvent toolEvent(const QMouseEvent* event) const;
     void showSelection();
+    /// Draws body i as its grid now has it, if it is soft: the deformed outline, and the ellipses
+    /// and strain when they are shown.
+    void syncSoftBody(std::size_t i);
     void drawGridLabels(QPainter* painter, const QRectF& rect, double spacing, int linesPerMajor) const;
 
     const SimulationRunner& m_runner;
@@ -178,6 +190,9 @@ private:
     std::vector<BodyItem*> m_bodyItems;
     std::vector<SpringItem*> m_springItems;
     std::vector<JointItem*> m_jointItems;
+    std::vector<SoftDetailItem*> m_softItems;
+    bool m_showSoftEllipses = false;
+    bool m_showSoftStrain = false;
     std::vector<std::unique_ptr<Tool>> m_tools;
     Tool* m_tool = nullptr;
     QRectF m_frameRect;

@@ -1,6 +1,7 @@
 #include "view/main_window.h"
 
 #include "controller/diagnostics.h"
+#include "controller/soft_stability.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
 #include "view/property_pane.h"
@@ -76,6 +77,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
     connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
+    connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateSoftStatus);
     connect(m_document, &SceneDocument::fileChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_canvas, &CanvasView::spaceTapped, m_playAction, &QAction::toggle);
@@ -88,6 +90,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_canvas->setFocus();
     updateTitle();
     updateStatus();
+    updateSoftStatus();
 }
 
 SimulationRunner& MainWindow::runner() { return m_document->runner(); }
@@ -157,6 +160,16 @@ void MainWindow::createActions()
     m_snapAction->setShortcut(QKeySequence(Qt::Key_G));
     m_snapAction->setStatusTip(tr("Place and move points on the grid lines' crossings"));
     connect(m_snapAction, &QAction::toggled, m_canvas, &CanvasView::setSnapToGrid);
+
+    m_softEllipsesAction = new QAction(tr("Show Soft-Body &Ellipses"), this);
+    m_softEllipsesAction->setCheckable(true);
+    m_softEllipsesAction->setStatusTip(tr("Draw the small ellipses a soft body is made of"));
+    connect(m_softEllipsesAction, &QAction::toggled, m_canvas, &CanvasView::setShowSoftEllipses);
+    m_softStrainAction = new QAction(tr("Show Soft-Body S&train"), this);
+    m_softStrainAction->setCheckable(true);
+    m_softStrainAction->setStatusTip(
+        tr("Draw a soft body's springs coloured by strain: blue compressed, grey at rest, red stretched"));
+    connect(m_softStrainAction, &QAction::toggled, m_canvas, &CanvasView::setShowSoftStrain);
 
     m_frameAction = new QAction(tr("&Frame Scene"), this);
     m_frameAction->setShortcut(QKeySequence(Qt::Key_Home));
@@ -247,6 +260,9 @@ void MainWindow::createMenus()
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addAction(m_snapAction);
     viewMenu->addAction(m_frameAction);
+    viewMenu->addSeparator();
+    viewMenu->addAction(m_softEllipsesAction);
+    viewMenu->addAction(m_softStrainAction);
     viewMenu->setObjectName(QStringLiteral("viewMenu"));
 
     QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
@@ -355,7 +371,12 @@ void MainWindow::createStatusBar()
     m_momentumLabel->setAccessibleName(tr("Total momentum"));
     m_collisionLabel = new QLabel(this);
     m_collisionLabel->setAccessibleName(tr("Collision count"));
-    for (QLabel* label : {m_timeLabel, m_energyPartsLabel, m_energyLabel, m_momentumLabel, m_collisionLabel}) {
+    m_softLabel = new QLabel(this);
+    m_softLabel->setObjectName(QStringLiteral("softStatus"));
+    m_softLabel->setAccessibleName(tr("Soft bodies"));
+    m_softLabel->hide();
+    for (QLabel* label :
+         {m_softLabel, m_timeLabel, m_energyPartsLabel, m_energyLabel, m_momentumLabel, m_collisionLabel}) {
         label->setContentsMargins(kStatusLabelPaddingPx, 0, kStatusLabelPaddingPx, 0);
         statusBar()->addPermanentWidget(label);
     }
@@ -560,6 +581,31 @@ void MainWindow::updateStatus()
     const Vec2 momentum = controller::linearMomentum(world);
     m_momentumLabel->setText(tr("p = (%1, %2) kg·m/s").arg(momentum.x(), 0, 'f', 3).arg(momentum.y(), 0, 'f', 3));
     m_collisionLabel->setText(tr("Collisions: %1").arg(world.collisionCount));
+}
+
+void MainWindow::updateSoftStatus()
+{
+    const model::World& world = m_document->world();
+    if (world.softBodies.empty()) {
+        m_softLabel->hide();
+        return;
+    }
+    QStringList densities;
+    for (const model::SoftGrid& grid : world.softBodies) {
+        const model::Body& body = world.body(grid.body);
+        const bool automatic = body.soft && body.soft->autoDensity;
+        densities << (automatic ? tr("%1: %2/m² (auto)") : tr("%1: %2/m²"))
+                         .arg(QString::fromStdString(body.name))
+                         .arg(grid.ellipsesPerSquareMeter, 0, 'g', 4);
+    }
+    const controller::SoftStability stability = controller::softStability(world);
+    QString text = tr("Soft %1").arg(densities.join(QStringLiteral(", ")));
+    if (stability.substeps > 1)
+        text += tr("  — %n substep(s) per step", nullptr, stability.substeps);
+    m_softLabel->setText(text);
+    m_softLabel->setToolTip(stability.message.empty() ? tr("One step per step: the grids are stable at this time step.")
+                                                      : QString::fromStdString(stability.message));
+    m_softLabel->show();
 }
 
 void MainWindow::updateTitle()

@@ -124,6 +124,9 @@ private:
     void createToolBars();
     void createDock();
     void createStatusBar();
+    /// Shows the soft bodies' ellipse density (and whether "auto" chose it) and the substeps the
+    /// step is split into, with the reason; hides the label when the world has no soft body.
+    void updateSoftStatus();
     void openSceneDialog();
     bool saveAsDialog();
     void openExample(const QString& path, const QString& title);
@@ -163,6 +166,9 @@ private:
     QLabel* m_energyPartsLabel = nullptr;
     QLabel* m_momentumLabel = nullptr;
     QLabel* m_collisionLabel = nullptr;
+    QLabel* m_softLabel = nullptr; ///< soft bodies' density and substeps; hidden without any
+    QAction* m_softEllipsesAction = nullptr;
+    QAction* m_softStrainAction = nullptr;
 };
 
 } // namespace impetus::view

@@ -1,5 +1,7 @@
 #include "view/simulation_runner.h"
 
+#include "controller/soft_body_builder.h"
+
 #include "view/view_constants.h"
 
 #include <algorithm>
@@ -21,6 +23,9 @@ void SimulationRunner::setWorld(model::World world)
 {
     pause();
     m_world = std::move(world);
+    // Soft bodies get their grids now, not at the first step: the canvas draws them from the
+    // start, and an "auto" density is measured at load time and shown before Play.
+    controller::prepareSoftBodies(m_world);
     m_worldAtLastPlay.reset();
     m_accumulator = 0;
     emit worldChanged();
@@ -30,6 +35,7 @@ void SimulationRunner::setWorld(model::World world)
 void SimulationRunner::editWorld(const std::function<void(model::World&)>& edit)
 {
     edit(m_world);
+    controller::prepareSoftBodies(m_world); // a body just made soft, or a soft body resized
     emit worldChanged();
 }
 

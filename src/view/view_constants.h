@@ -59,6 +59,17 @@ inline constexpr int kCollidingRed = 0xdc;
 inline constexpr int kCollidingGreen = 0x26;
 inline constexpr int kCollidingBlue = 0x26;
 
+/// A soft body's details (docs/app.md, "Soft bodies"). Grid springs are coloured by strain
+/// L/L₀ − 1 from blue (compressed) through grey (rest) to red (stretched), saturating at ±10 %:
+/// a visible squash is a few per cent, and a tenth is already a hard crush.
+inline constexpr double kStrainColourFullScale = 0.10;
+inline constexpr int kStrainRestGrey = 0x90; ///< grey of a spring at rest length
+inline constexpr int kSoftEllipseGrey = 0x40; ///< outline of a soft body's ellipses
+inline constexpr double kSoftSpringWidthPx = 1.0; ///< px, cosmetic
+inline constexpr double kSoftEllipseWidthPx = 0.75; ///< px, cosmetic
+/// Z value of the soft-detail items: above bodies (z 0) and springs, below tool overlays.
+inline constexpr double kSoftDetailZ = 5.0;
+
 /// Number of zig-zag corners drawn on a spring. Fixed, so a stretched spring shows longer teeth.
 inline constexpr int kSpringZigZagCorners = 12;
 
