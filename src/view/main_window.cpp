@@ -599,9 +599,9 @@ void MainWindow::updateSoftStatus()
                          .arg(grid.ellipsesPerSquareMeter, 0, 'g', 4);
     }
     const controller::SoftStability stability = controller::softStability(world);
-    QString text = tr("Soft %1").arg(densities.join(QStringLiteral(", ")));
+    QString text = densities.join(QStringLiteral(", "));
     if (stability.substeps > 1)
-        text += tr("  — %n substep(s) per step", nullptr, stability.substeps);
+        text = tr("%1 — %2 substeps per step").arg(text).arg(stability.substeps);
     m_softLabel->setText(text);
     m_softLabel->setToolTip(stability.message.empty() ? tr("One step per step: the grids are stable at this time step.")
                                                       : QString::fromStdString(stability.message));
