@@ -432,6 +432,10 @@ void PropertyPane::buildBodyPage()
     m_softDensity->setPlaceholderText(tr("a number or “auto”"));
     addLabelledRow(form, tr("Ellipses per m²"), rowWith({m_softDensity}, tr("1/m²")), m_softDensity);
     connect(m_softDensity, &QLineEdit::editingFinished, this, &PropertyPane::onSoftDensityEdited);
+    m_softGrid = named(new QLabel, "softGrid", tr("Soft grid"));
+    m_softGrid->setWordWrap(true);
+    m_softGrid->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(QString(), m_softGrid);
 
     // Soft fields are only enabled while the body is soft, so m_body.soft is present when they apply.
     m_softStiffness = &addNumber(Page::Body, form, QStringLiteral("softStiffness"), tr("Soft stiffness"), tr("N/m"),
@@ -869,6 +873,16 @@ void PropertyPane::load(const model::World& world)
         m_page = Page::Body;
         m_index = body;
         m_body = world.bodies[static_cast<std::size_t>(body)];
+        // What the engine made of a soft body: how many ellipses, at which density (the one
+        // "auto" chose on this machine).
+        m_softGridText.clear();
+        if (const model::SoftGrid* grid = world.softGrid(model::BodyId{static_cast<std::uint32_t>(body)})) {
+            const bool automatic = m_body.soft && m_body.soft->autoDensity;
+            m_softGridText = (automatic ? tr("%1 ellipses at %2 per m², chosen by “auto” on this computer")
+                                        : tr("%1 ellipses at %2 per m²"))
+                                 .arg(grid->size())
+                                 .arg(grid->ellipsesPerSquareMeter, 0, 'g', 4);
+        }
         m_bodyNames.clear();
         m_bodyNames.reserve(world.bodies.size());
         for (const model::Body& b : world.bodies)
@@ -969,6 +983,8 @@ void PropertyPane::displayBody(bool replaceFocused)
     m_softStiffness->edit->setEnabled(m_body.soft.has_value());
     m_softDamping->edit->setEnabled(m_body.soft.has_value());
     displaySoftDensity(replaceFocused);
+    m_softGrid->setText(m_softGridText);
+    m_softGrid->setVisible(!m_softGridText.isEmpty());
 }
 
 void PropertyPane::displaySoftDensity(bool replaceFocused)

@@ -169,6 +169,7 @@ private:
     std::optional<model::BodyState> m_endStateB; ///< pose of a joint's body B, nullopt for the world
     std::vector<Vec2> m_shownVertices; ///< what the vertex table shows
     QString m_softDensityShown; ///< the text last put in the ellipses-per-m² field
+    QString m_softGridText; ///< the shown soft body's ellipse count and density, or empty
     QLocale m_locale; ///< the user's locale, without group separators
 
     QLabel* m_title = nullptr;
@@ -193,6 +194,7 @@ private:
     QColorDialog* m_colorDialog = nullptr;
     QCheckBox* m_soft = nullptr;
     QLineEdit* m_softDensity = nullptr;
+    QLabel* m_softGrid = nullptr; ///< read-only: what the engine built (the "auto" choice)
     NumberField* m_softStiffness = nullptr;
     NumberField* m_softDamping = nullptr;
     QLineEdit* m_springBodyA = nullptr;

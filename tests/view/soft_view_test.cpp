@@ -7,6 +7,8 @@
 #include "view/body_item.h"
 #include "view/canvas_view.h"
 #include "view/main_window.h"
+#include "view/property_pane.h"
+#include "view/scene_document.h"
 #include "view/simulation_runner.h"
 #include "view/soft_detail_item.h"
 
@@ -144,6 +146,13 @@ void SoftViewTest::statusBarShowsDensityAndAutoChoice()
     QVERIFY(grid->ellipsesPerSquareMeter >= 64 && grid->ellipsesPerSquareMeter <= 1024);
     QVERIFY(label->text().contains(QStringLiteral("(auto)")));
     QVERIFY(label->text().contains(QString::number(grid->ellipsesPerSquareMeter)));
+    // The pane says it too, once the body is selected.
+    window.document().setSelection(view::Selection{{1}, {}, {}});
+    auto* paneGrid = window.propertyPane()->findChild<QLabel*>(QStringLiteral("softGrid"));
+    QVERIFY(paneGrid);
+    QVERIFY(paneGrid->isVisible() || !window.isVisible());
+    QVERIFY(paneGrid->text().contains(QStringLiteral("auto")));
+    QVERIFY(paneGrid->text().contains(QString::number(grid->size())));
 
     // A world without soft bodies hides it.
     model::World rigid = softBoxWorld();
