@@ -2,14 +2,17 @@
 
 #include "controller/diagnostics.h"
 #include "controller/soft_stability.h"
+#include "controller/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -272,6 +275,21 @@ void MainWindow::createMenus()
     simulationMenu->addAction(m_playAction);
     simulationMenu->addAction(m_stepAction);
     simulationMenu->addAction(m_resetAction);
+    simulationMenu->addSeparator();
+    m_compareRigidAction = simulationMenu->addAction(tr("&Compare Soft with Rigid…"), this,
+                                                     &MainWindow::compareSelectedWithRigid);
+    m_compareRigidAction->setStatusTip(
+        tr("Run the selected soft body rigid and soft for a few seconds and show how far apart they drift"));
+    const auto updateCompare = [this] {
+        const std::vector<int>& bodies = m_document->selection().bodies;
+        const model::World& world = m_document->world();
+        m_compareRigidAction->setEnabled(bodies.size() == 1 && static_cast<std::size_t>(bodies[0]) < world.bodies.size() &&
+                                         world.bodies[static_cast<std::size_t>(bodies[0])].soft.has_value() &&
+                                         !world.bodies[static_cast<std::size_t>(bodies[0])].fixed);
+    };
+    connect(m_document, &SceneDocument::selectionChanged, this, updateCompare);
+    connect(m_document, &SceneDocument::worldChanged, this, updateCompare);
+    updateCompare();
 
     m_examplesMenu = menuBar()->addMenu(tr("E&xamples"));
     for (const ExampleScene& example : exampleScenes()) {
@@ -581,6 +599,46 @@ void MainWindow::updateStatus()
     const Vec2 momentum = controller::linearMomentum(world);
     m_momentumLabel->setText(tr("p = (%1, %2) kg·m/s").arg(momentum.x(), 0, 'f', 3).arg(momentum.y(), 0, 'f', 3));
     m_collisionLabel->setText(tr("Collisions: %1").arg(world.collisionCount));
+}
+
+void MainWindow::compareSelectedWithRigid()
+{
+    const std::vector<int>& selected = m_document->selection().bodies;
+    if (selected.size() != 1)
+        return;
+    m_document->runner().pause();
+    const model::World& world = m_document->world();
+    const model::BodyId id{static_cast<std::uint32_t>(selected[0])};
+    const auto steps = static_cast<std::int64_t>(std::llround(constants::kCompareRigidSeconds / world.settings.timeStep));
+    const std::int64_t sampleEvery = std::max<std::int64_t>(1, steps / constants::kCompareRigidRows);
+    // Both runs are copies: the scene itself does not move. They take a moment, so say so.
+    statusBar()->showMessage(tr("Running %1 rigid and soft…").arg(QString::fromStdString(world.body(id).name)));
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const controller::RigidSoftComparison result = controller::compareRigidSoft(world, id, steps, sampleEvery);
+    QApplication::restoreOverrideCursor();
+    statusBar()->clearMessage();
+
+    QString table = tr("<table><tr><th align=right>t (s)</th><th align=right>distance (m)</th></tr>");
+    for (const controller::RigidSoftSample& sample : result.samples)
+        table += QStringLiteral("<tr><td align=right>%1</td><td align=right>%2</td></tr>")
+                     .arg(sample.time - world.time, 0, 'f', 2)
+                     .arg(sample.distance, 0, 'f', 4);
+    table += QStringLiteral("</table>");
+    QMessageBox box(QMessageBox::Information, tr("Soft against rigid"), QString(), QMessageBox::Ok, this);
+    box.setObjectName(QStringLiteral("compareRigidBox"));
+    box.setTextFormat(Qt::RichText);
+    box.setText(tr("<p>How far the centre of mass of <b>%1</b> run soft (%2 ellipses, %3 per m²) drifts from "
+                   "the same body run rigid, over the next %4 s:</p><p>RMS %5 m, largest %6 m at t = %7 s.</p>%8")
+                    .arg(QString::fromStdString(world.body(id).name).toHtmlEscaped())
+                    .arg(result.ellipses)
+                    .arg(result.ellipsesPerSquareMeter, 0, 'g', 4)
+                    .arg(constants::kCompareRigidSeconds, 0, 'g', 3)
+                    .arg(result.rmsDistance, 0, 'f', 4)
+                    .arg(result.maxDistance, 0, 'f', 4)
+                    .arg(result.maxDistanceTime - world.time, 0, 'f', 2)
+                    .arg(table));
+    m_lastComparison = result;
+    box.exec();
 }
 
 void MainWindow::updateSoftStatus()

@@ -3,6 +3,7 @@
 /// The main window: the canvas, the tools, the run controls, the menus, the readouts and the
 /// attributes dock.
 
+#include "controller/soft_comparison.h"
 #include "model/world.h"
 #include "view/tools/tool.h"
 
@@ -11,6 +12,7 @@
 #include <QStringList>
 
 #include <map>
+#include <optional>
 
 class QAction;
 class QActionGroup;
@@ -86,6 +88,8 @@ public:
 
     /// The right-hand dock for the attribute pane; its widget is a placeholder until replaced.
     QDockWidget* attributesDock() const { return m_attributesDock; }
+    /// The result of the last Simulation › Compare Soft with Rigid, if any.
+    const std::optional<controller::RigidSoftComparison>& lastComparison() const { return m_lastComparison; }
     /// The attribute pane inside attributesDock().
     PropertyPane* propertyPane() const { return m_pane; }
 
@@ -127,6 +131,10 @@ private:
     /// Shows the soft bodies' ellipse density (and whether "auto" chose it) and the substeps the
     /// step is split into, with the reason; hides the label when the world has no soft body.
     void updateSoftStatus();
+    /// Simulation › Compare Soft with Rigid: runs copies of the scene with the selected soft body
+    /// rigid and soft (controller::compareRigidSoft) and shows how far apart their centres of mass
+    /// drift.
+    void compareSelectedWithRigid();
     void openSceneDialog();
     bool saveAsDialog();
     void openExample(const QString& path, const QString& title);
@@ -141,6 +149,7 @@ private:
     CanvasView* m_canvas;
     QDockWidget* m_attributesDock = nullptr;
     PropertyPane* m_pane = nullptr; ///< the attributes dock's widget
+    std::optional<controller::RigidSoftComparison> m_lastComparison;
     QString m_lastDirectory;
     QAction* m_newAction = nullptr;
     QAction* m_openAction = nullptr;
@@ -168,6 +177,7 @@ private:
     QLabel* m_collisionLabel = nullptr;
     QLabel* m_softLabel = nullptr; ///< soft bodies' density and substeps; hidden without any
     QAction* m_softEllipsesAction = nullptr;
+    QAction* m_compareRigidAction = nullptr;
     QAction* m_softStrainAction = nullptr;
 };
 

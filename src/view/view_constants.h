@@ -6,6 +6,8 @@
 
 #include <QColor>
 
+#include <cstdint>
+
 namespace impetus::view::constants {
 
 /// Interval of the run timer, ms. 16 ms is about one 60 Hz display frame; the runner measures the
@@ -69,6 +71,11 @@ inline constexpr double kSoftSpringWidthPx = 1.0; ///< px, cosmetic
 inline constexpr double kSoftEllipseWidthPx = 0.75; ///< px, cosmetic
 /// Z value of the soft-detail items: above bodies (z 0) and springs, below tool overlays.
 inline constexpr double kSoftDetailZ = 5.0;
+
+/// Simulation › Compare Soft with Rigid runs this long, s, and lists about this many samples: a
+/// few seconds show a landing and its rebound, and twenty rows fit a dialog.
+inline constexpr double kCompareRigidSeconds = 3.0;
+inline constexpr std::int64_t kCompareRigidRows = 20;
 
 /// Number of zig-zag corners drawn on a spring. Fixed, so a stretched spring shows longer teeth.
 inline constexpr int kSpringZigZagCorners = 12;

@@ -16,6 +16,8 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QTimer>
 #include <QTest>
 
 #include <cmath>
@@ -67,6 +69,7 @@ private slots:
     void viewMenuShowsEllipsesAndStrain();
     void statusBarShowsDensityAndAutoChoice();
     void strainColoursRunBlueGreyRed();
+    void compareSoftWithRigidFromTheMenu();
 
 private:
     view::test::TemporarySettings m_settings;
@@ -172,6 +175,41 @@ void SoftViewTest::strainColoursRunBlueGreyRed()
     QVERIFY(stretched.red() > 200 && stretched.blue() < 40);
     const QColor slight = view::SoftDetailItem::strainColour(0.05);
     QVERIFY(slight.red() > rest.red() && slight.red() < stretched.red());
+}
+
+void SoftViewTest::compareSoftWithRigidFromTheMenu()
+{
+    MainWindow window;
+    window.setScene(softBoxWorld(), QStringLiteral("soft"));
+    QAction* compare = viewAction(window, QStringLiteral("Compare Soft with Rigid…"));
+    QVERIFY(compare);
+    // Only for one soft body.
+    window.document().setSelection(view::Selection{{2}, {}, {}});
+    QVERIFY(!compare->isEnabled());
+    window.document().setSelection(view::Selection{{1}, {}, {}});
+    QVERIFY(compare->isEnabled());
+
+    const model::World before = window.runner().world();
+    QString seenTitle;
+    QTimer::singleShot(0, &window, [&] {
+        auto* box = window.findChild<QMessageBox*>(QStringLiteral("compareRigidBox"));
+        if (box) {
+            seenTitle = box->windowTitle();
+            box->accept();
+        }
+    });
+    compare->trigger();
+    QCOMPARE(seenTitle, QStringLiteral("Soft against rigid"));
+    QVERIFY(window.lastComparison().has_value());
+    const controller::RigidSoftComparison& result = *window.lastComparison();
+    QVERIFY(result.samples.size() >= 20);
+    QCOMPARE(result.ellipses, std::size_t(64));
+    // Both start at the same centre of mass; the soft one lands softer, so they drift apart.
+    QVERIFY(result.samples.front().distance < 1e-9);
+    QVERIFY(result.maxDistance > 1e-4);
+    QVERIFY(result.rmsDistance <= result.maxDistance);
+    // The comparison ran on copies: the scene has not moved.
+    QCOMPARE(window.runner().world(), before);
 }
 
 QTEST_MAIN(SoftViewTest)
