@@ -92,18 +92,6 @@ std::optional<QSize> parseSize(const QString& text)
     return QSize(width, height);
 }
 
-/// The name of the first body whose state is not finite, if any.
-std::optional<QString> firstNonFiniteBody(const impetus::model::World& world)
-{
-    for (const impetus::model::Body& body : world.bodies) {
-        const impetus::model::BodyState& s = body.state;
-        if (!impetus::isFinite(s.position) || !impetus::isFinite(s.velocity) || !std::isfinite(s.angle)
-            || !std::isfinite(s.angularVelocity))
-            return QString::fromStdString(body.name);
-    }
-    return std::nullopt;
-}
-
 int runScreenshot(const QString& output, const QString& runForText, const QString& sizeText,
                   const QString& scenePath)
 {
@@ -139,6 +127,10 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
 
     view::SimulationRunner runner;
     runner.setWorld(std::move(*scene.world));
+    // The runner checks every batch of steps for a state that is not finite and reports it.
+    std::optional<std::pair<QString, double>> divergence;
+    QObject::connect(&runner, &view::SimulationRunner::diverged,
+                     [&divergence](const QString& body, double time) { divergence.emplace(body, time); });
     // The canvas exists before the run, as in the window: it frames the bodies where they were
     // loaded, and a body that flies away leaves the picture instead of shrinking it.
     view::CanvasView canvas(runner);
@@ -149,10 +141,10 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
     const auto chunk = std::max<std::int64_t>(1, std::llround(1.0 / dt));
     for (auto remaining = static_cast<std::int64_t>(steps); remaining > 0; remaining -= chunk) {
         runner.stepBy(std::min(chunk, remaining));
-        if (const std::optional<QString> body = firstNonFiniteBody(runner.world())) {
+        if (divergence) {
             printError(translate("the simulation produced a non-finite number: body “%1”, by t = %2 s")
-                           .arg(*body)
-                           .arg(runner.world().time));
+                           .arg(divergence->first)
+                           .arg(divergence->second));
             return kExitFailure;
         }
     }

@@ -2,6 +2,7 @@
 
 #include "controller/force_model.h"
 
+#include <cmath>
 #include <vector>
 
 namespace impetus::controller {
@@ -48,6 +49,17 @@ Scalar angularMomentum(const model::World& world)
         l += body.inertia * s.angularVelocity + body.mass * cross(s.position, s.velocity);
     }
     return l;
+}
+
+std::optional<std::size_t> firstNonFiniteBody(const model::World& world)
+{
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const model::BodyState& s = world.bodies[i].state;
+        if (!isFinite(s.position) || !isFinite(s.velocity) || !std::isfinite(s.angle) ||
+            !std::isfinite(s.angularVelocity))
+            return i;
+    }
+    return std::nullopt;
 }
 
 } // namespace impetus::controller

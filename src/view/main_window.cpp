@@ -74,6 +74,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     SimulationRunner& runner = m_document->runner();
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
+    connect(&runner, &SimulationRunner::diverged, this, &MainWindow::showDivergence);
     connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::fileChanged, this, &MainWindow::updateTitle);
@@ -440,6 +441,25 @@ void MainWindow::showProblems(const QString& path, const QStringList& problems)
     }
     box.setInformativeText(shown.join(QLatin1Char('\n')));
     box.exec();
+}
+
+void MainWindow::showDivergence(const QString& bodyName, double time)
+{
+    // Window-modal and not waiting for an answer: the report comes from inside a timer tick, and
+    // a nested event loop there would only invite more ticks.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("The simulation blew up"),
+                                tr("Body “%1” got a position or velocity that is not a finite number by t = %2 s.")
+                                    .arg(bodyName)
+                                    .arg(time, 0, 'g', 6),
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("divergedBox"));
+    box->setInformativeText(tr("The run stopped at the last finite state. The time step is too large for the "
+                               "stiffest spring or the fastest motion in the scene. Press Reset (R) to go back to "
+                               "where you pressed Play, or Undo (Ctrl+Z); then try a smaller time step or a softer "
+                               "spring."));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
 }
 
 bool MainWindow::saveTo(const QString& path)

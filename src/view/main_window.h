@@ -36,6 +36,10 @@ class SimulationRunner;
 /// Before discarding edits that are not saved (New, Open, an example, closing) the window asks
 /// with a QMessageBox whose object name is "unsavedChangesBox". The dock layout and the window
 /// geometry are kept in QSettings.
+///
+/// When a run produces a state that is not a finite number (SimulationRunner::diverged()), the
+/// run stops on the last finite state and a window-modal message box (object name "divergedBox")
+/// names the body and the time and suggests Reset or Undo.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -133,6 +137,7 @@ private:
     void updateStatus();
     void updateTitle();
     void showProblems(const QString& path, const QStringList& problems);
+    void showDivergence(const QString& bodyName, double time);
 
     SceneDocument* m_document;
     CanvasView* m_canvas;

@@ -1,5 +1,6 @@
 #include "view/simulation_runner.h"
 
+#include "controller/diagnostics.h"
 #include "view/view_constants.h"
 
 #include <algorithm>
@@ -52,6 +53,9 @@ std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
         return 0;
     m_accumulator += wallSeconds * m_speed;
     const std::int64_t maxSteps = maxStepsPerFrame();
+    if (!(m_accumulator >= dt))
+        return 0;
+    model::World before = m_world;
     std::int64_t steps = 0;
     while (m_accumulator >= dt && steps < maxSteps) {
         m_simulation.step(m_world);
@@ -62,8 +66,7 @@ std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
     // time slows down for a moment instead of the next frames trying (and failing) to catch up.
     if (m_accumulator >= dt)
         m_accumulator = 0;
-    if (steps > 0)
-        emit stepped();
+    finishBatch(steps, std::move(before));
     return steps;
 }
 
@@ -127,9 +130,29 @@ void SimulationRunner::onTimerTick()
 
 void SimulationRunner::takeSteps(std::int64_t count)
 {
+    model::World before = m_world;
     for (std::int64_t i = 0; i < count; ++i)
         m_simulation.step(m_world);
-    emit stepped();
+    finishBatch(count, std::move(before));
+}
+
+void SimulationRunner::finishBatch(std::int64_t steps, model::World before)
+{
+    if (steps <= 0)
+        return;
+    const std::optional<std::size_t> bad = controller::firstNonFiniteBody(m_world);
+    if (!bad) {
+        emit stepped();
+        return;
+    }
+    // Not a number spreads to every body it touches and cannot be drawn: keep the last finite
+    // world, which the view still shows, and stop, so that the user can read it, reset or undo.
+    const QString name = QString::fromStdString(m_world.bodies[*bad].name);
+    const double time = m_world.time;
+    m_world = std::move(before);
+    m_accumulator = 0;
+    pause();
+    emit diverged(name, time);
 }
 
 } // namespace impetus::view

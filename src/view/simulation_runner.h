@@ -8,6 +8,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QString>
 #include <QTimer>
 
 #include <cstdint>
@@ -23,6 +24,11 @@ namespace impetus::view {
 /// step. At most constants::kMaxSimulatedTimePerFrame of simulated time is taken per tick; wall
 /// time beyond that is dropped, so a slow frame slows simulated time down but never changes the
 /// step. The physics therefore gives the same bits whatever the frame rate.
+///
+/// After every batch of steps (a tick, a Step, stepBy()) the runner checks the world with
+/// controller::firstNonFiniteBody(). A batch that left a body's state not finite is taken back:
+/// the runner puts back the world from before that batch (the last finite one, which the view
+/// still shows), pauses and emits diverged(). The world at the last play() stays for a reset.
 class SimulationRunner : public QObject {
     Q_OBJECT
 
@@ -60,7 +66,7 @@ public:
 
     /// Adds `wallSeconds` × speed() to the accumulator and takes fixed steps while it holds one,
     /// up to maxStepsPerFrame(); a backlog beyond that is dropped. Emits stepped() once if it
-    /// stepped. Returns the number of steps taken. The timer calls this with the measured frame
+    /// stepped (or diverged() instead, see the class comment). Returns the number of steps taken. The timer calls this with the measured frame
     /// time; tests call it directly.
     std::int64_t advanceWallTime(double wallSeconds);
 
@@ -99,9 +105,17 @@ signals:
     /// The runner started (true) or stopped (false).
     void runningChanged(bool running);
 
+    /// A batch of steps gave body `bodyName` a position, angle or velocity that is not a finite
+    /// number by simulated time `time` (s): the step is too large for a stiff spring or a fast
+    /// motion. The runner has paused and put back the world from before that batch.
+    void diverged(const QString& bodyName, double time);
+
 private:
     void onTimerTick();
     void takeSteps(std::int64_t count);
+    /// Ends a batch of `steps` steps that began from `before`: emits stepped(), or, when the world
+    /// is no longer finite, puts `before` back, pauses and emits diverged().
+    void finishBatch(std::int64_t steps, model::World before);
 
     model::World m_world;
     std::optional<model::World> m_worldAtLastPlay;

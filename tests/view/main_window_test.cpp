@@ -19,6 +19,8 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include <cmath>
+
 using impetus::view::MainWindow;
 namespace model = impetus::model;
 namespace test = impetus::view::test;
@@ -47,6 +49,7 @@ private slots:
     void badSceneFileLeavesCurrentSceneUntouched();
     void badSceneFileShowsProblemsInMessageBox();
     void widgetsHaveAccessibleNames();
+    void runThatBlowsUpStopsWithAMessage();
 
 private:
     /// Shows `window` and waits until it is active, so that its shortcuts work.
@@ -223,6 +226,38 @@ void MainWindowTest::widgetsHaveAccessibleNames()
     QVERIFY(toolBars.at(0)->widgetForAction(window.playAction()) != nullptr);
     for (const QLabel* label : window.statusBar()->findChildren<QLabel*>())
         QVERIFY(!label->accessibleName().isEmpty());
+}
+
+void MainWindowTest::runThatBlowsUpStopsWithAMessage()
+{
+    MainWindow window;
+    window.setScene(test::explodingSpringWorld(), QStringLiteral("stiff spring"));
+    QVERIFY(showActive(window));
+    const model::World start = window.runner().world();
+
+    // Play with Space on the canvas: the run soon gives not-a-number and stops by itself.
+    QTest::keyClick(&window.canvas(), Qt::Key_Space);
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("divergedBox")) != nullptr);
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("divergedBox"));
+    QVERIFY(!window.runner().isRunning());
+    QVERIFY(!window.playAction()->isChecked());
+    const QString text = box->text() + QLatin1Char('\n') + box->informativeText();
+    QVERIFY2(text.contains(QStringLiteral("“bob”")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("t = ")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Reset")) && text.contains(QStringLiteral("Undo")), qPrintable(text));
+    // The window shows the last finite state: no "nan" in the readouts.
+    QVERIFY2(!statusText(window).contains(QStringLiteral("nan"), Qt::CaseInsensitive), qPrintable(statusText(window)));
+    QVERIFY(std::isfinite(window.runner().world().bodies[0].state.position.x()));
+    box->button(QMessageBox::Ok)->click();
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("divergedBox")) == nullptr);
+
+    // Nothing is lost: Reset goes back to the world at Play. (The offscreen platform gives the
+    // activation back to no window when the box closes; a desktop gives it to the main window.)
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.canvas().setFocus();
+    QTest::keyClick(&window.canvas(), Qt::Key_R);
+    QVERIFY(window.runner().world() == start);
 }
 
 QTEST_MAIN(MainWindowTest)

@@ -4,6 +4,8 @@
 #include "test_worlds.h"
 #include "view/simulation_runner.h"
 
+#include "controller/diagnostics.h"
+
 #include <QSignalSpy>
 #include <QTest>
 
@@ -24,6 +26,8 @@ private slots:
     void playRunsInRealTimeAndPauseStops();
     void resetGoesBackToLastPlay();
     void editWorldKeepsRunningAndTheWorldAtPlay();
+    void divergingBatchIsTakenBackPausedAndReported();
+    void divergingStepsAreReportedToo();
 };
 
 void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
@@ -177,6 +181,57 @@ void SimulationRunnerTest::editWorldKeepsRunningAndTheWorldAtPlay()
 
     runner.setWorld(test::risingBallWorld());
     QCOMPARE(replaced.count(), 1);
+}
+
+
+void SimulationRunnerTest::divergingBatchIsTakenBackPausedAndReported()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::explodingSpringWorld());
+    runner.play();
+    const model::World atPlay = runner.world();
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+    QSignalSpy diverged(&runner, &SimulationRunner::diverged);
+
+    // Wall time comes in frames, as from the timer, until a frame's batch blows up.
+    model::World lastFinite = runner.world();
+    for (int frame = 0; frame < 100 && diverged.isEmpty(); ++frame) {
+        lastFinite = runner.world();
+        runner.advanceWallTime(1.0 / 60);
+    }
+    QCOMPARE(diverged.count(), 1);
+    QCOMPARE(diverged.at(0).at(0).toString(), QStringLiteral("bob"));
+    // The time reported is when the batch ended, later than the world that is kept.
+    const double time = diverged.at(0).at(1).toDouble();
+    QVERIFY2(time > lastFinite.time, qPrintable(QString::number(time)));
+    // Stopped, on the last finite world (the one the view showed), with the world at Play kept.
+    QVERIFY(!runner.isRunning());
+    QVERIFY(runner.world() == lastFinite);
+    QVERIFY(!impetus::controller::firstNonFiniteBody(runner.world()));
+    QVERIFY(runner.worldAtLastPlay() && *runner.worldAtLastPlay() == atPlay);
+    // The blown-up batch did not tell the view to draw it.
+    const qsizetype steppedBefore = stepped.count();
+    QCOMPARE(runner.advanceWallTime(0), std::int64_t(0));
+    QCOMPARE(stepped.count(), steppedBefore);
+    runner.resetToLastPlay();
+    QVERIFY(runner.world() == atPlay);
+}
+
+void SimulationRunnerTest::divergingStepsAreReportedToo()
+{
+    // stepBy (the screenshot mode) and stepOnce (the Step button) check as well.
+    SimulationRunner runner;
+    runner.setWorld(test::explodingSpringWorld());
+    QSignalSpy diverged(&runner, &SimulationRunner::diverged);
+    const model::World start = runner.world();
+    runner.stepBy(1000);
+    QCOMPARE(diverged.count(), 1);
+    QVERIFY(runner.world() == start);
+    while (diverged.count() == 1 && runner.world().stepCount < 1000)
+        runner.stepOnce();
+    QCOMPARE(diverged.count(), 2);
+    QCOMPARE(diverged.at(1).at(0).toString(), QStringLiteral("bob"));
+    QVERIFY(!impetus::controller::firstNonFiniteBody(runner.world()));
 }
 
 QTEST_MAIN(SimulationRunnerTest)

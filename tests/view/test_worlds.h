@@ -53,4 +53,20 @@ inline model::World hangingBoxWorld()
     return world;
 }
 
+/// No gravity; a ball called "bob" 1 m from the world origin, held there by a spring far too stiff
+/// (k = 10¹⁴ N/m) for the default time step: within a few dozen steps its state is not finite.
+inline model::World explodingSpringWorld()
+{
+    model::World world;
+    world.settings.gravity = Vec2::Zero();
+    world.bodies.push_back(makeBody("bob", model::Circle{0.1}, Vec2(1, 0)));
+    model::Spring spring;
+    spring.bodyA = model::BodyId{0};
+    spring.anchorB = Vec2(0, 0);
+    spring.stiffness = 1e14;
+    spring.restLength = 0;
+    world.springs.push_back(spring);
+    return world;
+}
+
 } // namespace impetus::view::test
