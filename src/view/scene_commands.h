@@ -33,6 +33,11 @@ auto& elementsOf(W& world)
 }
 
 /// Replaces one body, spring or joint; undo puts the previous value back.
+///
+/// A body edit whose new value has the same state as the body had (an attribute edit: friction,
+/// colour, size, … but not position, angle or velocities) changes the attributes alone, on redo and
+/// undo alike: the body keeps the state it has by then, and its collision flag and count, so that
+/// undoing a change made during a run does not send the body back to where it was at the edit.
 template <class T>
 class SetElementCommand : public QUndoCommand {
 public:
@@ -44,6 +49,8 @@ public:
         , m_before(elementsOf<T>(document.world())[m_index])
         , m_after(std::move(value))
     {
+        if constexpr (std::is_same_v<T, model::Body>)
+            m_attributesOnly = m_before.state == m_after.state;
     }
     /// Puts in the new value.
     void redo() override { put(m_after); }
@@ -53,13 +60,27 @@ public:
 private:
     void put(const T& value)
     {
-        m_document.applyEdit([&](model::World& world) { elementsOf<T>(world)[m_index] = value; });
+        m_document.applyEdit([&](model::World& world) {
+            T& element = elementsOf<T>(world)[m_index];
+            if constexpr (std::is_same_v<T, model::Body>) {
+                if (m_attributesOnly) {
+                    model::Body body = value;
+                    body.state = element.state;
+                    body.colliding = element.colliding;
+                    body.collisionCount = element.collisionCount;
+                    element = std::move(body);
+                    return;
+                }
+            }
+            element = value;
+        });
     }
 
     SceneDocument& m_document;
     std::size_t m_index;
     T m_before;
     T m_after;
+    bool m_attributesOnly = false; ///< a body edit that leaves the state alone
 };
 
 /// Appends a body, spring or joint; undo removes it again.

@@ -156,6 +156,7 @@ private slots:
     void examplesMenuListsAndOpensExamples();
     void dockLayoutIsRemembered();
     void screenshotRendersRedWithoutSelection();
+    void undoingAnAttributeEditKeepsTheBodyWhereItIs();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -923,6 +924,46 @@ void EditorTest::screenshotRendersRedWithoutSelection()
     const QPoint inside = canvas.toView(QPointF(p.x(), p.y() + 0.15)).toPoint();
     QVERIFY2(near(image.pixelColor(inside), QColor(0xdc, 0x26, 0x26)), qPrintable(image.pixelColor(inside).name()));
     QCOMPARE(canvas.tool(), nullptr);
+}
+
+void EditorTest::undoingAnAttributeEditKeepsTheBodyWhereItIs()
+{
+    open(test::risingBallWorld());
+    CanvasView& canvas = m_window->canvas();
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{0}, {}, {}}));
+    const model::World& world = m_window->runner().world();
+
+    // Run, and change the ball's friction in the pane while it runs.
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QTRY_VERIFY(world.time > 0.05);
+    auto* friction = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("friction"));
+    QVERIFY(friction);
+    friction->setFocus();
+    friction->selectAll();
+    QTest::keyClicks(friction, QStringLiteral("0.9"));
+    QTest::keyClick(friction, Qt::Key_Return);
+    QCOMPARE(world.bodies[0].material.friction, 0.9);
+    QVERIFY(m_window->runner().isRunning());
+
+    // The ball rises on; pause, then undo the friction change from the canvas.
+    const double editedAt = world.time;
+    QTRY_VERIFY(world.time > editedAt + 0.05);
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(!m_window->runner().isRunning());
+    const model::BodyState now = world.bodies[0].state;
+    QVERIFY(now.position.y() > editedAt + 0.04); // 1 m/s upward since t = 0
+    QCOMPARE(shownText(m_window->undoAction()), QStringLiteral("Undo Change friction"));
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(world.bodies[0].material.friction, 0.5);
+    QCOMPARE(world.bodies[0].state, now);
+    QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(now.position.x(), now.position.y()));
+
+    // Redo puts the friction back, and leaves the ball where it is too.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(world.bodies[0].material.friction, 0.9);
+    QCOMPARE(world.bodies[0].state, now);
 }
 
 QTEST_MAIN(EditorTest)
