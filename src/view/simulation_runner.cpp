@@ -9,6 +9,14 @@
 
 namespace impetus::view {
 
+namespace {
+
+/// Largest step count maxStepsPerFrame() reports: far beyond what a tick can take, and below
+/// 2⁶³ ≈ 9.2·10¹⁸, so that converting it to std::int64_t is defined.
+constexpr double kLargestStepCount = 1e18;
+
+} // namespace
+
 SimulationRunner::SimulationRunner(QObject* parent)
     : QObject(parent)
 {
@@ -42,8 +50,10 @@ void SimulationRunner::setSpeed(double speed)
 
 std::int64_t SimulationRunner::maxStepsPerFrame() const
 {
+    // A time step of 1e-300 s asks for 10²⁹⁹ steps, which no integer holds: clamp before converting
+    // (a NaN, from a step that is not positive, fails the comparison and clamps too).
     const double steps = std::floor(constants::kMaxSimulatedTimePerFrame / m_world.settings.timeStep);
-    return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+    return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps < kLargestStepCount ? steps : kLargestStepCount));
 }
 
 std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
@@ -56,14 +66,20 @@ std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
     if (!(m_accumulator >= dt))
         return 0;
     model::World before = m_world;
+    QElapsedTimer wallClock;
+    wallClock.start();
+    const auto budgetNs = static_cast<qint64>(constants::kMaxSteppingWallTimePerTickMs * 1e6);
     std::int64_t steps = 0;
     while (m_accumulator >= dt && steps < maxSteps) {
         m_simulation.step(m_world);
         m_accumulator -= dt;
         ++steps;
+        if (wallClock.nsecsElapsed() >= budgetNs)
+            break;
     }
-    // The frame owed more than we may simulate in one tick: drop the backlog so that simulated
-    // time slows down for a moment instead of the next frames trying (and failing) to catch up.
+    // The frame owed more than we may simulate in one tick, or the steps took longer than the
+    // tick may: drop the backlog so that simulated time slows down instead of the next frames
+    // trying (and failing) to catch up while the window stops answering.
     if (m_accumulator >= dt)
         m_accumulator = 0;
     finishBatch(steps, std::move(before));

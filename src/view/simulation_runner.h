@@ -21,9 +21,11 @@ namespace impetus::view {
 ///
 /// Each timer tick adds the elapsed wall time × speed() to an accumulator and calls
 /// Simulation::step() with the world's fixed time step while the accumulator holds at least one
-/// step. At most constants::kMaxSimulatedTimePerFrame of simulated time is taken per tick; wall
-/// time beyond that is dropped, so a slow frame slows simulated time down but never changes the
-/// step. The physics therefore gives the same bits whatever the frame rate.
+/// step. At most constants::kMaxSimulatedTimePerFrame of simulated time, and at most
+/// constants::kMaxSteppingWallTimePerTickMs of wall time spent stepping, are taken per tick; the
+/// backlog beyond either is dropped, so a slow frame (or a tiny time step) slows simulated time
+/// down but never changes the step. The physics therefore gives the same bits whatever the frame
+/// rate.
 ///
 /// After every batch of steps (a tick, a Step, stepBy()) the runner checks the world with
 /// controller::firstNonFiniteBody(). A batch that left a body's state not finite is taken back:
@@ -61,11 +63,12 @@ public:
     const std::optional<model::World>& worldAtLastPlay() const { return m_worldAtLastPlay; }
 
     /// The most fixed steps one timer tick takes: the steps in constants::kMaxSimulatedTimePerFrame,
-    /// at least one.
+    /// at least one, and at most 10¹⁸ (however small the time step).
     std::int64_t maxStepsPerFrame() const;
 
     /// Adds `wallSeconds` × speed() to the accumulator and takes fixed steps while it holds one,
-    /// up to maxStepsPerFrame(); a backlog beyond that is dropped. Emits stepped() once if it
+    /// up to maxStepsPerFrame() and for at most constants::kMaxSteppingWallTimePerTickMs of wall
+    /// time; a backlog beyond either is dropped. Emits stepped() once if it
     /// stepped (or diverged() instead, see the class comment). Returns the number of steps taken. The timer calls this with the measured frame
     /// time; tests call it directly.
     std::int64_t advanceWallTime(double wallSeconds);

@@ -18,6 +18,18 @@ inline constexpr int kFrameIntervalMs = 16;
 /// backlog that freezes the window (the "spiral of death").
 inline constexpr double kMaxSimulatedTimePerFrame = 0.1;
 
+/// The most wall time one timer tick may spend stepping, ms. A 16 ms frame keeps about 4 ms for
+/// painting and input. A tick that runs out stops stepping and drops the rest of its backlog, as
+/// for kMaxSimulatedTimePerFrame: simulated time slows down, the step never changes, and a time
+/// step far too small for the machine (or a very large scene) leaves the window responsive.
+inline constexpr double kMaxSteppingWallTimePerTickMs = 12.0;
+
+/// The time steps the attribute pane accepts, s. Below 10 µs a classroom scene needs more than
+/// 100 000 steps per simulated second, so it crawls; above 0.1 s (10 Hz) contacts and springs are
+/// resolved too coarsely to mean anything. A scene file may hold any positive step.
+inline constexpr double kMinEditableTimeStep = 1e-5;
+inline constexpr double kMaxEditableTimeStep = 0.1;
+
 /// Space left around the bodies when a scene is framed, as a fraction of the larger side of their
 /// bounding box, on each side. 8 % keeps outlines off the window edge without wasting the canvas.
 inline constexpr double kFrameMarginFraction = 0.08;

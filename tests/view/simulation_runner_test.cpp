@@ -28,6 +28,7 @@ private slots:
     void editWorldKeepsRunningAndTheWorldAtPlay();
     void divergingBatchIsTakenBackPausedAndReported();
     void divergingStepsAreReportedToo();
+    void tinyTimeStepCannotFreezeATick();
 };
 
 void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
@@ -232,6 +233,32 @@ void SimulationRunnerTest::divergingStepsAreReportedToo()
     QCOMPARE(diverged.count(), 2);
     QCOMPARE(diverged.at(1).at(0).toString(), QStringLiteral("bob"));
     QVERIFY(!impetus::controller::firstNonFiniteBody(runner.world()));
+}
+
+void SimulationRunnerTest::tinyTimeStepCannotFreezeATick()
+{
+    SimulationRunner runner;
+    model::World world = test::risingBallWorld();
+    // A step no machine can take 10¹⁷ of in a frame: the per-frame count is huge, and defined.
+    world.settings.timeStep = 1e-18;
+    runner.setWorld(world);
+    QVERIFY2(runner.maxStepsPerFrame() >= std::int64_t(1e15), qPrintable(QString::number(runner.maxStepsPerFrame())));
+    // However small the step, the count stays a positive number (1e-300 s would overflow int64).
+    world.settings.timeStep = 1e-300;
+    runner.setWorld(world);
+    QVERIFY2(runner.maxStepsPerFrame() >= std::int64_t(1e15), qPrintable(QString::number(runner.maxStepsPerFrame())));
+
+    // One frame of wall time at dt = 1e-9 s owes 1.7·10⁷ steps, many seconds of work: the tick
+    // stops after its wall-clock budget, with far fewer, and drops the rest of the backlog.
+    world.settings.timeStep = 1e-9;
+    runner.setWorld(world);
+    const std::int64_t steps = runner.advanceWallTime(1.0 / 60);
+    QVERIFY(steps > 0);
+    QVERIFY2(steps < std::int64_t(1e7), qPrintable(QString::number(steps)));
+    QCOMPARE(runner.world().stepCount, steps);
+    QCOMPARE(runner.advanceWallTime(0), std::int64_t(0));
+    // The step itself never changed: the ball rose exactly steps × dt at 1 m/s.
+    QVERIFY(qAbs(runner.world().bodies[0].state.position.y() - static_cast<double>(steps) * 1e-9) < 1e-12);
 }
 
 QTEST_MAIN(SimulationRunnerTest)
