@@ -896,6 +896,13 @@ void PropertyPane::load(const model::World& world)
         m_endNameB = nameOf(m_joint.bodyB);
         m_endStateA = stateOf(m_joint.bodyA).value_or(model::BodyState{});
         m_endStateB = stateOf(m_joint.bodyB);
+        // The pin's worldAnchor is where it was made; bodies moved since. Show and edit the hinge
+        // where it is now: on body A, or the fixed world point of a pin to the world.
+        if (m_joint.type == model::JointType::Pin) {
+            m_joint.worldAnchor = m_joint.bodyB
+                ? Vec2(m_endStateA.position + rotate(m_joint.anchorA, m_endStateA.angle))
+                : m_joint.anchorB;
+        }
     }
 }
 

@@ -157,6 +157,7 @@ private slots:
     void dockLayoutIsRemembered();
     void screenshotRendersRedWithoutSelection();
     void undoingAnAttributeEditKeepsTheBodyWhereItIs();
+    void pinHingeFieldShowsAndEditsTheHingeWhereItIsNow();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -964,6 +965,58 @@ void EditorTest::undoingAnAttributeEditKeepsTheBodyWhereItIs()
     QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
     QCOMPARE(world.bodies[0].material.friction, 0.9);
     QCOMPARE(world.bodies[0].state, now);
+}
+
+void EditorTest::pinHingeFieldShowsAndEditsTheHingeWhereItIsNow()
+{
+    // Two planks hinged end to end at the origin, no gravity.
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("left", model::Box{1, 0.4}, Vec2(-0.5, 0)));
+    world.bodies.push_back(test::makeBody("right", model::Box{1, 0.4}, Vec2(0.5, 0)));
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = model::BodyId{0};
+    pin.bodyB = model::BodyId{1};
+    pin.worldAnchor = Vec2(0, 0);
+    pin.anchorA = Vec2(0.5, 0);
+    pin.anchorB = Vec2(-0.5, 0);
+    world.joints.push_back(pin);
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+
+    // Drag the left plank away: the hinge, a point of that plank, goes with it.
+    drag(canvas.viewport(), pixelOf(canvas, QPointF(-0.5, 0)), pixelOf(canvas, QPointF(-1.5, 0.8)));
+    const model::World& now = m_window->runner().world();
+    const Vec2 hinge = now.bodies[0].worldPoint(now.joints[0].anchorA);
+    QVERIFY((hinge - Vec2(-1, 0.8)).norm() < 0.05);
+
+    // The pane shows the hinge where it is now, not where the pin was made.
+    m_window->document().setSelection(Selection{{}, {}, {0}});
+    auto* hingeX = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("pinAnchorX"));
+    auto* hingeY = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("pinAnchorY"));
+    QVERIFY(hingeX && hingeY && hingeX->isVisible());
+    QVERIFY2(qAbs(hingeX->text().toDouble() - hinge.x()) < 1e-5, qPrintable(hingeX->text()));
+    QVERIFY2(qAbs(hingeY->text().toDouble() - hinge.y()) < 1e-5, qPrintable(hingeY->text()));
+
+    // Move the hinge 0.1 m up along the joint line by typing its y: x stays where it is now, and
+    // both planks get their anchor on the new point, so nothing pulls them anywhere.
+    const Vec2 moved(hinge.x(), hinge.y() + 0.1);
+    hingeY->setFocus();
+    hingeY->selectAll();
+    QTest::keyClicks(hingeY, QString::number(moved.y(), 'g', 17));
+    QTest::keyClick(hingeY, Qt::Key_Return);
+    const model::Joint& edited = now.joints[0];
+    const Vec2 onLeft = now.bodies[0].worldPoint(edited.anchorA);
+    const Vec2 onRight = now.bodies[1].worldPoint(edited.anchorB);
+    QVERIFY2((onLeft - moved).norm() < 1e-9, qPrintable(QStringLiteral("%1, %2").arg(onLeft.x()).arg(onLeft.y())));
+    QVERIFY2((onRight - moved).norm() < 1e-9, qPrintable(QStringLiteral("%1, %2").arg(onRight.x()).arg(onRight.y())));
+    const Vec2 leftBefore = now.bodies[0].state.position;
+    const Vec2 rightBefore = now.bodies[1].state.position;
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QCOMPARE(now.stepCount, std::int64_t(1));
+    QVERIFY((now.bodies[0].state.position - leftBefore).norm() < 1e-9);
+    QVERIFY((now.bodies[1].state.position - rightBefore).norm() < 1e-9);
 }
 
 QTEST_MAIN(EditorTest)
