@@ -180,10 +180,22 @@ void MainWindow::createActions()
     m_resetAction->setToolTip(tr("Go back to the state at the last Play (R)"));
     connect(m_resetAction, &QAction::triggered, m_document, &SceneDocument::resetToLastPlay);
 
+    // Shortcuts with Ctrl work wherever the focus is in the window.
     for (QAction* action : {m_newAction, m_openAction, m_saveAction, m_saveAsAction, m_quitAction, m_undoAction,
-                            m_redoAction, m_deleteAction, m_selectAllAction, m_snapAction, m_frameAction,
-                            m_playAction, m_stepAction, m_resetAction})
+                            m_redoAction, m_selectAllAction})
         addAction(action);
+    for (QAction* action : {m_deleteAction, m_snapAction, m_frameAction, m_playAction, m_stepAction, m_resetAction})
+        addCanvasShortcut(action);
+}
+
+void MainWindow::addCanvasShortcut(QAction* action)
+{
+    // A single key (or Del) belongs to the widget that has the focus when that is a field of the
+    // pane: Space ticks a check box, Del and the arrows edit the vertex table. So these shortcuts
+    // act only while the canvas, or a tool bar that shows the action, has the focus; the menus
+    // still show them.
+    action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_canvas->addAction(action);
 }
 
 void MainWindow::createToolActions()
@@ -218,7 +230,7 @@ void MainWindow::createToolActions()
         const ToolKind kind = entry.kind;
         connect(action, &QAction::triggered, this, [this, kind] { m_canvas->setTool(kind); });
         m_toolActions[kind] = action;
-        addAction(action);
+        addCanvasShortcut(action);
     }
     m_toolActions.at(ToolKind::Select)->setChecked(true);
     connect(m_canvas, &CanvasView::toolChanged, this, [this](ToolKind kind) { m_toolActions.at(kind)->setChecked(true); });

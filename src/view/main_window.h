@@ -27,7 +27,9 @@ class SceneDocument;
 class SimulationRunner;
 
 /// The application window. The canvas is the central widget; a tool bar on the left holds the
-/// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed); the
+/// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed). The
+/// one-key shortcuts (those, Del, G, Home and the tool letters) act while the canvas or a tool bar
+/// has the focus, so that the attribute pane keeps its keys; the Ctrl shortcuts act anywhere. The
 /// status bar shows the simulated time, the energies, the momentum and the collision count. The
 /// attributes dock (object name "attributesDock") sits on the right. Menus: File (New, Open, Open
 /// Recent, Save, Save As, Quit), Edit (Undo, Redo, Delete, Select All), View, Tools, Simulation
@@ -128,6 +130,7 @@ private:
     void createToolBars();
     void createDock();
     void createStatusBar();
+    void addCanvasShortcut(QAction* action);
     void openSceneDialog();
     bool saveAsDialog();
     void openExample(const QString& path, const QString& title);

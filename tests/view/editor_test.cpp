@@ -18,6 +18,7 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QCheckBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
@@ -27,6 +28,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QLineEdit>
 #include <QTest>
@@ -158,6 +160,8 @@ private slots:
     void screenshotRendersRedWithoutSelection();
     void undoingAnAttributeEditKeepsTheBodyWhereItIs();
     void pinHingeFieldShowsAndEditsTheHingeWhereItIsNow();
+    void spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay();
+    void deleteAndArrowsInTheVertexTableStayInTheTable();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1017,6 +1021,62 @@ void EditorTest::pinHingeFieldShowsAndEditsTheHingeWhereItIsNow()
     QCOMPARE(now.stepCount, std::int64_t(1));
     QVERIFY((now.bodies[0].state.position - leftBefore).norm() < 1e-9);
     QVERIFY((now.bodies[1].state.position - rightBefore).norm() < 1e-9);
+}
+
+void EditorTest::spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("crate", model::Box{1, 1}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{0}, {}, {}}));
+
+    // A keyboard user tabs to "Fixed" and presses Space: the box is fixed, nothing plays.
+    auto* fixed = m_window->propertyPane()->findChild<QCheckBox*>(QStringLiteral("fixed"));
+    QVERIFY(fixed && fixed->isVisible() && !fixed->isChecked());
+    fixed->setFocus(Qt::TabFocusReason);
+    QVERIFY(fixed->hasFocus());
+    QTest::keyClick(fixed, Qt::Key_Space);
+    QVERIFY(fixed->isChecked());
+    QVERIFY(m_window->runner().world().bodies[0].fixed);
+    QVERIFY(!m_window->runner().isRunning());
+    // The menus still show the shortcut, and on the canvas Space still plays.
+    QCOMPARE(m_window->playAction()->shortcut(), QKeySequence(Qt::Key_Space));
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(m_window->runner().isRunning());
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(!m_window->runner().isRunning());
+}
+
+void EditorTest::deleteAndArrowsInTheVertexTableStayInTheTable()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(
+        test::makeBody("wedge", model::Polygon{{Vec2(0, 0), Vec2(2, 0), Vec2(2, 1)}}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    m_window->document().setSelection(Selection{{0}, {}, {}});
+    auto* table = m_window->propertyPane()->findChild<QTableWidget*>(QStringLiteral("vertices"));
+    QVERIFY(table && table->isVisible());
+    table->setFocus(Qt::TabFocusReason);
+    table->setCurrentCell(1, 0);
+
+    // Delete in the table is the table's: the body stays. → moves to the next cell, not a step.
+    QTest::keyClick(table, Qt::Key_Delete);
+    QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(1));
+    QTest::keyClick(table, Qt::Key_Right);
+    QCOMPARE(table->currentColumn(), 1);
+    QCOMPARE(m_window->runner().world().stepCount, std::int64_t(0));
+    // Tool letters and R do not act from the table either.
+    QTest::keyClick(table, Qt::Key_B);
+    QCOMPARE(canvas.toolKind(), ToolKind::Select);
+
+    // On the canvas, Delete deletes.
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QVERIFY(m_window->runner().world().bodies.empty());
 }
 
 QTEST_MAIN(EditorTest)
