@@ -13,11 +13,11 @@
 /// 1 a failure at run time (the PNG cannot be written, the simulation produced a non-finite
 /// number, the embedded default scene cannot be read).
 ///
-/// A scene given on the command line that fails to load is reported on stderr, one
-/// "FILE: path: reason" line per problem, and the app exits with 2 without opening a window. A
-/// command line is a script's or a terminal user's tool: both read stderr, and a modal dialog
-/// would hang a script. Inside the running app, File > Open shows the problems in a dialog
-/// instead and keeps the current scene.
+/// With --screenshot, a scene that fails to load is reported on stderr, one "FILE: path: reason"
+/// line per problem, and the app exits with 2 without rendering: a script reads stderr, and a
+/// dialog would hang it. Without --screenshot (a user who double-clicked a file, or typed its
+/// name), the window opens on the default scene and lists every problem in the dialog File > Open
+/// uses; the problems also go to stderr for a terminal user.
 
 #include "view/canvas_view.h"
 #include "view/main_window.h"
@@ -230,14 +230,17 @@ int main(int argc, char* argv[])
     }
 
     view::MainWindow window;
-    const QString path = scenePath.isEmpty() ? QString::fromLatin1(view::kDefaultScenePath) : scenePath;
-    const QStringList problems = window.openScene(path);
-    if (!problems.isEmpty()) {
-        printProblems(path, problems);
-        // The embedded default scene failing is a broken build, not the user's input.
-        return scenePath.isEmpty() ? kExitFailure : kExitUsage;
+    if (scenePath.isEmpty()) {
+        const QString path = QString::fromLatin1(view::kDefaultScenePath);
+        if (const QStringList problems = window.openScene(path); !problems.isEmpty()) {
+            // The embedded default scene failing is a broken build, not the user's input.
+            printProblems(path, problems);
+            return kExitFailure;
+        }
     }
     window.resize(kWindowWidth, kWindowHeight);
     window.show();
+    if (!scenePath.isEmpty())
+        printProblems(scenePath, window.openStartupScene(scenePath));
     return QApplication::exec();
 }

@@ -27,6 +27,7 @@
 #include <QUndoStack>
 
 #include <array>
+#include <memory>
 #include <utility>
 
 namespace impetus::view {
@@ -440,19 +441,43 @@ void MainWindow::openExample(const QString& path, const QString& title)
     m_document->setScene(std::move(*result.world), QString(), title);
 }
 
+QStringList MainWindow::openStartupScene(const QString& path)
+{
+    const QStringList problems = openScene(path);
+    if (problems.isEmpty())
+        return problems;
+    // A window with a scene to press Play on, and the problems in front of it, serve a user who
+    // double-clicked a file better than no window at all.
+    const bool defaultOpened = openScene(QString::fromLatin1(kDefaultScenePath)).isEmpty();
+    QMessageBox* box = makeProblemsBox(path, problems,
+                                       defaultOpened ? tr("The default scene is shown instead.")
+                                                     : tr("An empty scene is shown instead."));
+    // Not exec(): the caller is main(), which still has to start the application's event loop.
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
+    return problems;
+}
+
 void MainWindow::showProblems(const QString& path, const QStringList& problems)
 {
-    QMessageBox box(QMessageBox::Warning, tr("Cannot open scene"),
-                    tr("“%1” could not be opened. The current scene is unchanged.").arg(QFileInfo(path).fileName()),
-                    QMessageBox::Ok, this);
-    box.setObjectName(QStringLiteral("openErrorBox"));
+    std::unique_ptr<QMessageBox> box(makeProblemsBox(path, problems, tr("The current scene is unchanged.")));
+    box->exec();
+}
+
+QMessageBox* MainWindow::makeProblemsBox(const QString& path, const QStringList& problems, const QString& outcome)
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"),
+                                tr("“%1” could not be opened. %2").arg(QFileInfo(path).fileName(), outcome),
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("openErrorBox"));
     QStringList shown = problems.mid(0, kProblemsShown);
     if (problems.size() > kProblemsShown) {
         shown << tr("…and %n more.", nullptr, static_cast<int>(problems.size() - kProblemsShown));
-        box.setDetailedText(problems.join(QLatin1Char('\n')));
+        box->setDetailedText(problems.join(QLatin1Char('\n')));
     }
-    box.setInformativeText(shown.join(QLatin1Char('\n')));
-    box.exec();
+    box->setInformativeText(shown.join(QLatin1Char('\n')));
+    return box;
 }
 
 void MainWindow::showDivergence(const QString& bodyName, double time)

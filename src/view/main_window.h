@@ -18,6 +18,7 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QMessageBox;
 
 namespace impetus::view {
 
@@ -59,6 +60,12 @@ public:
     /// A file that loads replaces the scene once the user agreed to discard unsaved edits.
     /// Returns true when the scene was opened.
     bool openSceneInteractively(const QString& path);
+
+    /// What `impetus SCENE.json` does: opens the scene at `path` like openScene(). When it fails to
+    /// load, the default example scene is opened instead and the problems are listed in the same
+    /// box as File > Open's (object name "openErrorBox"), window-modal, without waiting for it to
+    /// be closed. Returns the problems, one "path: reason" line each; empty when `path` opened.
+    QStringList openStartupScene(const QString& path);
 
     /// Shows `world` (paused) under the name `name`, with no file.
     void setScene(model::World world, const QString& name);
@@ -140,6 +147,7 @@ private:
     void updateStatus();
     void updateTitle();
     void showProblems(const QString& path, const QStringList& problems);
+    QMessageBox* makeProblemsBox(const QString& path, const QStringList& problems, const QString& outcome);
     void showDivergence(const QString& bodyName, double time);
 
     SceneDocument* m_document;

@@ -95,7 +95,6 @@ private slots:
     void badArgumentsExitWithTwo_data();
     void badArgumentsExitWithTwo();
     void unwritableOutputExitsWithOne();
-    void openingBadSceneExitsWithTwo();
     void screenshotOfRunThatBlowsUpExitsWithOne();
     void helpExitsWithZero();
 
@@ -261,17 +260,6 @@ void CommandLineTest::unwritableOutputExitsWithOne()
                                 QStringLiteral("320x240"), scenePath()});
     QCOMPARE(run.exitCode, 1);
     QVERIFY(!run.stdErr.isEmpty());
-}
-
-void CommandLineTest::openingBadSceneExitsWithTwo()
-{
-    // Without --screenshot a bad scene is reported on stderr, one line per problem naming the
-    // file, and no window opens (the process ends by itself).
-    const QString badScene = m_dir->filePath(QStringLiteral("bad.json"));
-    QVERIFY(writeFile(badScene, R"({ "format": "impetus-scene", "version": 1, "bodies": 3 })"));
-    const Run run = runImpetus({badScene});
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY(run.stdErr.contains(badScene + QStringLiteral(": bodies")));
 }
 
 void CommandLineTest::screenshotOfRunThatBlowsUpExitsWithOne()

@@ -50,6 +50,7 @@ private slots:
     void badSceneFileShowsProblemsInMessageBox();
     void widgetsHaveAccessibleNames();
     void runThatBlowsUpStopsWithAMessage();
+    void badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems();
 
 private:
     /// Shows `window` and waits until it is active, so that its shortcuts work.
@@ -258,6 +259,52 @@ void MainWindowTest::runThatBlowsUpStopsWithAMessage()
     window.canvas().setFocus();
     QTest::keyClick(&window.canvas(), Qt::Key_R);
     QVERIFY(window.runner().world() == start);
+}
+
+void MainWindowTest::badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems()
+{
+    // `impetus bad.json`: the window shows, on the default scene, with every problem listed in the
+    // box File > Open uses.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
+        { "name": "a", "shape": { "type": "box", "width": -1, "height": 1 }, "position": [0, 0] },
+        { "name": "a", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
+    file.close();
+
+    MainWindow window;
+    QVERIFY(showActive(window));
+    const QStringList problems = window.openStartupScene(path);
+    QCOMPARE(problems.size(), 2);
+    const model::SceneLoadResult expected = impetus::view::loadScene(QString::fromLatin1(impetus::view::kDefaultScenePath));
+    QVERIFY(expected.ok());
+    QVERIFY(window.runner().world() == *expected.world);
+    QVERIFY(window.isVisible());
+
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("openErrorBox"));
+    QVERIFY(box);
+    QTRY_VERIFY(box->isVisible());
+    const QString text = box->text() + QLatin1Char('\n') + box->informativeText();
+    QVERIFY2(text.contains(QStringLiteral("bad.json")) && text.contains(QStringLiteral("default scene")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bodies[0].shape.width")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bodies[1].name")), qPrintable(text));
+    box->button(QMessageBox::Ok)->click();
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);
+
+    // A good file opens with no box.
+    const QString good = dir.filePath(QStringLiteral("good.json"));
+    QFile goodFile(good);
+    QVERIFY(goodFile.open(QIODevice::WriteOnly));
+    goodFile.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
+        { "name": "only", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
+    goodFile.close();
+    QVERIFY(window.openStartupScene(good).isEmpty());
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t(1));
+    QVERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);
 }
 
 QTEST_MAIN(MainWindowTest)
