@@ -9,12 +9,22 @@
 
 #include <QUndoCommand>
 
+#include <cstdint>
+#include <functional>
+
 #include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace impetus::view {
+
+/// Forgets the contacts of the bodies for which `affected(index)` is true (removed, moved or
+/// reshaped: what the records say of them is no longer so, and their warm-start impulses belong to
+/// old pieces), and sets every body's `colliding` flag from the contacts that stay, so that a body
+/// whose only partner went away is drawn in its own colour at once. The contacts of other bodies
+/// stay, so a stack at rest elsewhere neither flickers nor counts its contacts again.
+void forgetContactsOf(model::World& world, const std::function<bool(std::uint32_t)>& affected);
 
 /// Ids for QUndoCommand::id(): commands with the same id may merge.
 enum class CommandId { SetPoses = 1, Step = 2 };
@@ -38,6 +48,7 @@ auto& elementsOf(W& world)
 /// colour, size, … but not position, angle or velocities) changes the attributes alone, on redo and
 /// undo alike: the body keeps the state it has by then, and its collision flag and count, so that
 /// undoing a change made during a run does not send the body back to where it was at the edit.
+/// A body edit that changes the shape or the pose forgets that body's contacts (forgetContactsOf).
 template <class T>
 class SetElementCommand : public QUndoCommand {
 public:
@@ -63,6 +74,12 @@ private:
         m_document.applyEdit([&](model::World& world) {
             T& element = elementsOf<T>(world)[m_index];
             if constexpr (std::is_same_v<T, model::Body>) {
+                const bool moved = !m_attributesOnly
+                    && (value.state.position != element.state.position || value.state.angle != element.state.angle);
+                if (moved || value.shape != element.shape) {
+                    const auto index = static_cast<std::uint32_t>(m_index);
+                    forgetContactsOf(world, [index](std::uint32_t i) { return i == index; });
+                }
                 if (m_attributesOnly) {
                     model::Body body = value;
                     body.state = element.state;
@@ -94,22 +111,21 @@ public:
         , m_value(std::move(value))
     {
     }
-    /// Appends the element.
+    /// Appends the element. (A new body is at the end, so no contact record changes meaning.)
     void redo() override
     {
-        m_document.applyEdit([&](model::World& world) {
-            elementsOf<T>(world).push_back(m_value);
-            // Contact records name bodies by index; a new body changes none, but the list is
-            // cleared anyway on every change of the body list so one rule covers every edit.
-            world.contacts.clear();
-        });
+        m_document.applyEdit([&](model::World& world) { elementsOf<T>(world).push_back(m_value); });
     }
-    /// Removes the last element, which is the one appended.
+    /// Removes the last element, which is the one appended, with the contacts of a body.
     void undo() override
     {
         m_document.applyEdit([&](model::World& world) {
-            elementsOf<T>(world).pop_back();
-            world.contacts.clear();
+            auto& elements = elementsOf<T>(world);
+            if constexpr (std::is_same_v<T, model::Body>) {
+                const auto last = static_cast<std::uint32_t>(elements.size() - 1);
+                forgetContactsOf(world, [last](std::uint32_t i) { return i == last; });
+            }
+            elements.pop_back();
         });
     }
 

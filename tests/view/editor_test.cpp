@@ -162,6 +162,7 @@ private slots:
     void pinHingeFieldShowsAndEditsTheHingeWhereItIsNow();
     void spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay();
     void deleteAndArrowsInTheVertexTableStayInTheTable();
+    void deletingOrMovingAPartnerEndsTheRed();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1077,6 +1078,63 @@ void EditorTest::deleteAndArrowsInTheVertexTableStayInTheTable()
     canvas.setFocus();
     QTest::keyClick(&canvas, Qt::Key_Delete);
     QVERIFY(m_window->runner().world().bodies.empty());
+}
+
+void EditorTest::deletingOrMovingAPartnerEndsTheRed()
+{
+    // Two blue discs touching at the origin, at rest, no gravity; far away a disc touching a floor.
+    model::World world = emptyWorld();
+    for (const double x : {-0.3, 0.3}) {
+        model::Body disc = test::makeBody(x < 0 ? "left" : "right", model::Circle{0.3}, Vec2(x, 0));
+        disc.color = model::Color{0x1d, 0x4e, 0xd8};
+        world.bodies.push_back(disc);
+    }
+    world.bodies.push_back(test::makeBody("floor", model::Box{2, 0.5}, Vec2(5, -0.55), true));
+    world.bodies.push_back(test::makeBody("rester", model::Circle{0.3}, Vec2(5, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    const QColor blue(0x1d, 0x4e, 0xd8);
+    const QColor red(0xdc, 0x26, 0x26);
+    const auto colourAt = [&](const QPointF& scene) {
+        return canvas.viewport()->grab().toImage().pixelColor(pixelOf(canvas, scene));
+    };
+    const model::World& now = m_window->runner().world();
+
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QVERIFY(now.bodies[0].colliding && now.bodies[1].colliding);
+    QVERIFY(now.bodies[2].colliding && now.bodies[3].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), red), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+
+    // Delete the right disc: the left one touches nothing any more and is blue again.
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0.4, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{1}, {}, {}}));
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QCOMPARE(now.bodies.size(), std::size_t(3));
+    QVERIFY(!now.bodies[0].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), blue), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+    // The disc resting on the floor far away still touches it, and stays red.
+    QVERIFY(now.bodies[1].colliding && now.bodies[2].colliding);
+    QVERIFY2(near(colourAt(QPointF(5, 0.15)), red), qPrintable(colourAt(QPointF(5, 0.15)).name()));
+    QCOMPARE(now.contacts.size(), std::size_t(1));
+    QCOMPARE(now.contacts[0].bodyA.index, 1u);
+    QCOMPARE(now.contacts[0].bodyB.index, 2u);
+
+    // Undo brings it back; a step makes both red; dragging the right one away ends the contact
+    // for both at once, before any step.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(now.bodies.size(), std::size_t(4));
+    QVERIFY(now.bodies[3].colliding);
+    QTest::keyClick(&canvas, Qt::Key_Escape);
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QVERIFY(now.bodies[0].colliding && now.bodies[1].colliding);
+    drag(canvas.viewport(), pixelOf(canvas, QPointF(0.4, 0)), pixelOf(canvas, QPointF(1.6, 0)));
+    QVERIFY(now.bodies[1].state.position.x() > 1.2);
+    QVERIFY(!now.bodies[0].colliding && !now.bodies[1].colliding);
+    QVERIFY(now.bodies[2].colliding && now.bodies[3].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), blue), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+    const Vec2 right = now.bodies[1].state.position;
+    QVERIFY2(near(colourAt(QPointF(right.x(), right.y() + 0.15)), blue),
+             qPrintable(colourAt(QPointF(right.x(), right.y() + 0.15)).name()));
 }
 
 QTEST_MAIN(EditorTest)
