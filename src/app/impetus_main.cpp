@@ -61,10 +61,6 @@ constexpr int kMaxScreenshotSide = 16384;
 /// hours of computing, so anything longer is a mistake.
 constexpr double kMaxScreenshotSteps = 1e9;
 
-/// Default main window size, px: fits a 1366x768 laptop screen with its panels.
-constexpr int kWindowWidth = 1200;
-constexpr int kWindowHeight = 720;
-
 QString translate(const char* text) { return QCoreApplication::translate("impetus", text); }
 
 void printError(const QString& message)
@@ -238,7 +234,6 @@ int main(int argc, char* argv[])
             return kExitFailure;
         }
     }
-    window.resize(kWindowWidth, kWindowHeight);
     window.show();
     if (!scenePath.isEmpty())
         printProblems(scenePath, window.openStartupScene(scenePath));

@@ -7,6 +7,7 @@
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -83,7 +84,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_canvas, &CanvasView::spaceTapped, m_playAction, &QAction::toggle);
 
     const QSettings settings;
-    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    // The size the user left the window at wins; the default is for the first start only.
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
+        resize(constants::kDefaultWindowWidth, constants::kDefaultWindowHeight);
     restoreState(settings.value(kWindowStateKey).toByteArray());
     m_snapAction->setChecked(settings.value(kSnapKey, false).toBool());
 

@@ -38,7 +38,8 @@ class SimulationRunner;
 ///
 /// Before discarding edits that are not saved (New, Open, an example, closing) the window asks
 /// with a QMessageBox whose object name is "unsavedChangesBox". The dock layout and the window
-/// geometry are kept in QSettings.
+/// geometry are kept in QSettings; a window with no saved geometry starts at
+/// constants::kDefaultWindowWidth × kDefaultWindowHeight.
 ///
 /// When a run produces a state that is not a finite number (SimulationRunner::diverged()), the
 /// run stops on the last finite state and a window-modal message box (object name "divergedBox")

@@ -88,6 +88,11 @@ inline constexpr double kSpringLeadFraction = 0.1;
 /// Radius of the marker drawn at a spring's fixed world anchor, px.
 inline constexpr double kAnchorMarkerRadiusPx = 4.0;
 
+/// Size of the main window on its first start, px, before QSettings holds the size the user
+/// left it at: fits a 1366x768 laptop screen with its panels.
+inline constexpr int kDefaultWindowWidth = 1200;
+inline constexpr int kDefaultWindowHeight = 720;
+
 /// Most commands the undo stack keeps. A run keeps two copies of the world, so a long session with
 /// a large scene must not keep every one; 200 is far more undo than a lesson needs.
 inline constexpr int kUndoLimit = 200;

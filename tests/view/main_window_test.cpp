@@ -7,12 +7,14 @@
 #include "view/main_window.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -51,6 +53,7 @@ private slots:
     void widgetsHaveAccessibleNames();
     void runThatBlowsUpStopsWithAMessage();
     void badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems();
+    void savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout();
 
 private:
     /// Shows `window` and waits until it is active, so that its shortcuts work.
@@ -305,6 +308,25 @@ void MainWindowTest::badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblem
     QVERIFY(window.openStartupScene(good).isEmpty());
     QCOMPARE(window.runner().world().bodies.size(), std::size_t(1));
     QVERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);
+}
+
+void MainWindowTest::savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout()
+{
+    QSettings().clear(); // this test's own settings folder: no window has been saved yet
+    {
+        MainWindow first;
+        QCOMPARE(first.size(), QSize(impetus::view::constants::kDefaultWindowWidth,
+                                     impetus::view::constants::kDefaultWindowHeight));
+        first.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&first));
+        first.resize(700, 500);
+        QVERIFY(first.close());
+    }
+    MainWindow second;
+    QCOMPARE(second.size(), QSize(700, 500));
+    second.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&second));
+    QCOMPARE(second.size(), QSize(700, 500));
 }
 
 QTEST_MAIN(MainWindowTest)
