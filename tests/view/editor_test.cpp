@@ -33,6 +33,7 @@
 #include <QLineEdit>
 #include <QTest>
 #include <QTimer>
+#include <QTranslator>
 #include <QToolTip>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -72,6 +73,19 @@ model::World approachingDiscs()
     }
     return world;
 }
+
+/// A translator that marks every example title it translates, «like this»: a title that comes out
+/// unmarked did not go through tr().
+class MarkingTranslator : public QTranslator {
+public:
+    bool isEmpty() const override { return false; }
+    QString translate(const char* context, const char* sourceText, const char* = nullptr, int = -1) const override
+    {
+        if (QLatin1String(context) != QLatin1String("impetus::view::Examples"))
+            return {};
+        return QStringLiteral("«%1»").arg(QString::fromUtf8(sourceText));
+    }
+};
 
 /// An action's text without its mnemonic ampersand: what the menu shows.
 QString shownText(const QAction* action) { return action->text().remove(QLatin1Char('&')); }
@@ -163,6 +177,7 @@ private slots:
     void spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay();
     void deleteAndArrowsInTheVertexTableStayInTheTable();
     void deletingOrMovingAPartnerEndsTheRed();
+    void everyExampleHasATranslatableTitle();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1135,6 +1150,28 @@ void EditorTest::deletingOrMovingAPartnerEndsTheRed()
     const Vec2 right = now.bodies[1].state.position;
     QVERIFY2(near(colourAt(QPointF(right.x(), right.y() + 0.15)), blue),
              qPrintable(colourAt(QPointF(right.x(), right.y() + 0.15)).name()));
+}
+
+void EditorTest::everyExampleHasATranslatableTitle()
+{
+    // Every scene in resources/examples gets its title from the table, through tr(): none is made
+    // from its file name, which a translator could not reach.
+    MarkingTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    const std::vector<impetus::view::ExampleScene> examples = impetus::view::exampleScenes();
+    QCoreApplication::removeTranslator(&translator);
+    QVERIFY(examples.size() >= 10);
+    QStringList titles;
+    for (const impetus::view::ExampleScene& example : examples) {
+        QVERIFY2(example.title.startsWith(QStringLiteral("«")) && example.title.endsWith(QStringLiteral("»")),
+                 qPrintable(example.path + QStringLiteral(": ") + example.title));
+        titles << example.title;
+    }
+    // One title each, and the examples by the names a student looks for.
+    titles.removeDuplicates();
+    QCOMPARE(titles.size(), static_cast<qsizetype>(examples.size()));
+    for (const char* title : {"«Newton's cradle»", "«Pendulum»", "«Billiards break»", "«Spaceship and asteroids»"})
+        QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char(','))));
 }
 
 QTEST_MAIN(EditorTest)
