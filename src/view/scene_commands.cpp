@@ -180,6 +180,9 @@ SetPosesCommand::SetPosesCommand(SceneDocument& document, std::vector<int> indic
     , m_after(std::move(poses))
     , m_gesture(gesture)
 {
+    // A command that changes nothing (a drag given up, a snap to where the body is) is dropped
+    // by the stack instead of leaving an empty "Move" to undo.
+    setObsolete(m_after == m_before);
 }
 
 void SetPosesCommand::redo() { put(m_after); }
@@ -192,6 +195,8 @@ bool SetPosesCommand::mergeWith(const QUndoCommand* other)
     if (next->m_gesture != m_gesture || next->m_indices != m_indices)
         return false;
     m_after = next->m_after;
+    // A drag that came back to its start, or was given up: the stack drops the whole command.
+    setObsolete(m_after == m_before);
     return true;
 }
 
@@ -199,7 +204,11 @@ void SetPosesCommand::put(const std::vector<BodyPose>& poses)
 {
     m_document.applyEdit([&](model::World& world) {
         forgetContactsOf(world, [&](std::uint32_t index) {
-            return std::ranges::find(m_indices, static_cast<int>(index)) != m_indices.end();
+            const auto it = std::ranges::find(m_indices, static_cast<int>(index));
+            if (it == m_indices.end())
+                return false;
+            const model::BodyState& state = world.bodies[index].state;
+            return poses[static_cast<std::size_t>(it - m_indices.begin())] != BodyPose{state.position, state.angle};
         });
         for (std::size_t k = 0; k < m_indices.size(); ++k) {
             model::BodyState& state = world.bodies[static_cast<std::size_t>(m_indices[k])].state;

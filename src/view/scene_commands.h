@@ -168,7 +168,8 @@ private:
 };
 
 /// Sets the position and angle of some bodies. Merges with the next SetPosesCommand of the same
-/// gesture and bodies, so a drag is one undo step.
+/// gesture and bodies, so a drag is one undo step; a command that ends up changing nothing is
+/// obsolete, and the stack drops it.
 class SetPosesCommand : public QUndoCommand {
 public:
     /// Sets bodies `indices` (valid) of `document` to `poses`, as part of `gesture`.

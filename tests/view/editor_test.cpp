@@ -178,6 +178,7 @@ private slots:
     void deleteAndArrowsInTheVertexTableStayInTheTable();
     void deletingOrMovingAPartnerEndsTheRed();
     void everyExampleHasATranslatableTitle();
+    void escapeCancelsADragInProgress();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1172,6 +1173,52 @@ void EditorTest::everyExampleHasATranslatableTitle()
     QCOMPARE(titles.size(), static_cast<qsizetype>(examples.size()));
     for (const char* title : {"«Newton's cradle»", "«Pendulum»", "«Billiards break»", "«Spaceship and asteroids»"})
         QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char(','))));
+}
+
+void EditorTest::escapeCancelsADragInProgress()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("crate", model::Box{0.6, 0.6}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    const model::World before = m_window->runner().world();
+    const int commands = m_window->document().undoStack()->count();
+    const QPoint onCrate = pixelOf(canvas, QPointF(0, 0));
+    const QPoint away = pixelOf(canvas, QPointF(2, 1));
+
+    // Press, drag, Escape, release: nothing is drawn, with every drag tool.
+    for (const Qt::Key key : {Qt::Key_B, Qt::Key_C, Qt::Key_E, Qt::Key_K, Qt::Key_L}) {
+        QTest::keyClick(&canvas, key);
+        QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, onCrate);
+        QTest::mouseMove(canvas.viewport(), (onCrate + away) / 2);
+        QTest::mouseMove(canvas.viewport(), away);
+        QTest::keyClick(&canvas, Qt::Key_Escape);
+        QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, away);
+        QVERIFY2(m_window->runner().world() == before, qPrintable(QKeySequence(key).toString()));
+        QCOMPARE(m_window->document().undoStack()->count(), commands);
+    }
+
+    // A move with the select tool, and a turn with the rotate tool: the crate goes back where it
+    // was, and there is nothing to undo.
+    for (const Qt::Key key : {Qt::Key_S, Qt::Key_T}) {
+        QTest::keyClick(&canvas, key);
+        QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, onCrate + QPoint(5, 5));
+        QTest::mouseMove(canvas.viewport(), onCrate + QPoint(40, 60));
+        QTest::mouseMove(canvas.viewport(), away);
+        QVERIFY(m_window->runner().world().bodies[0].state != before.bodies[0].state);
+        QTest::keyClick(&canvas, Qt::Key_Escape);
+        QCOMPARE(m_window->runner().world().bodies[0].state, before.bodies[0].state);
+        QTest::mouseMove(canvas.viewport(), away + QPoint(10, 0));
+        QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, away + QPoint(10, 0));
+        QCOMPARE(m_window->runner().world().bodies[0].state, before.bodies[0].state);
+        QCOMPARE(m_window->document().undoStack()->count(), commands);
+        QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(0, 0));
+    }
+
+    // The tools work as before afterwards.
+    QTest::keyClick(&canvas, Qt::Key_B);
+    drag(canvas.viewport(), away, away + QPoint(40, 40));
+    QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(2));
 }
 
 QTEST_MAIN(EditorTest)

@@ -4,6 +4,7 @@
 #include "view/scene_document.h"
 #include "view/view_constants.h"
 
+#include <QKeyEvent>
 #include <QLineF>
 #include <QPainter>
 
@@ -42,6 +43,17 @@ void DragShapeTool::mouseRelease(const ToolEvent& event)
     body.shape = std::move(outline->shape);
     body.state.position = toVec2(outline->centre);
     m_document.addBody(std::move(body), actionName());
+}
+
+bool DragShapeTool::wantsKey(int key, Qt::KeyboardModifiers) const { return m_dragging && key == Qt::Key_Escape; }
+
+bool DragShapeTool::keyPress(QKeyEvent* event)
+{
+    if (!wantsKey(event->key(), event->modifiers()))
+        return false;
+    // The release that follows finds no drag and draws nothing.
+    m_dragging = false;
+    return true;
 }
 
 void DragShapeTool::paintOverlay(QPainter& painter, double) const
