@@ -504,6 +504,9 @@ void MainWindow::showDivergence(const QString& bodyName, double time)
 
 bool MainWindow::saveTo(const QString& path)
 {
+    // A file holds one instant: the one on the canvas. Saving while the run goes on would write
+    // the world at some step after the one the user chose to keep, and go on changing it.
+    m_document->runner().pause();
     if (const std::optional<QString> error = m_document->saveAs(path)) {
         QMessageBox box(QMessageBox::Warning, tr("Cannot save scene"),
                         tr("The scene could not be saved to “%1”. Nothing was overwritten.").arg(path), QMessageBox::Ok,
@@ -519,6 +522,7 @@ bool MainWindow::saveTo(const QString& path)
 
 bool MainWindow::save()
 {
+    m_document->runner().pause();
     if (m_document->filePath().isEmpty())
         return saveAsDialog();
     return saveTo(m_document->filePath());
@@ -526,6 +530,8 @@ bool MainWindow::save()
 
 bool MainWindow::saveAsDialog()
 {
+    // Paused before the file dialog, so the instant saved is the one on screen when asked.
+    m_document->runner().pause();
     QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), m_lastDirectory,
                                                 tr("Impetus scenes (*.json);;All files (*)"));
     if (path.isEmpty())

@@ -74,11 +74,12 @@ public:
     /// File > New: an empty scene, after asking about unsaved edits. True when done.
     bool newScene();
 
-    /// Saves to `path` and makes it the scene's file; a failure shows a message box (object name
-    /// "saveErrorBox"). True when saved.
+    /// Pauses a run, then saves to `path` (the instant on the canvas) and makes it the scene's
+    /// file; a failure shows a message box (object name "saveErrorBox"). True when saved.
     bool saveTo(const QString& path);
 
-    /// File > Save: saves to the scene's file, or asks for one (Save As) when it has none.
+    /// File > Save: pauses a run, then saves to the scene's file, or asks for one (Save As) when it
+    /// has none.
     bool save();
 
     /// Asks whether to save unsaved edits (Save, Discard, Cancel) if there are any. True when the

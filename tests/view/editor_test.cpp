@@ -179,6 +179,7 @@ private slots:
     void deletingOrMovingAPartnerEndsTheRed();
     void everyExampleHasATranslatableTitle();
     void escapeCancelsADragInProgress();
+    void saveWhileRunningPausesAndSavesTheInstantShown();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1219,6 +1220,32 @@ void EditorTest::escapeCancelsADragInProgress()
     QTest::keyClick(&canvas, Qt::Key_B);
     drag(canvas.viewport(), away, away + QPoint(40, 40));
     QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(2));
+}
+
+void EditorTest::saveWhileRunningPausesAndSavesTheInstantShown()
+{
+    open(test::risingBallWorld());
+    CanvasView& canvas = m_window->canvas();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("rising.json"));
+    QVERIFY(m_window->saveTo(path));
+
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QTRY_VERIFY(m_window->runner().world().time > 0.05);
+    QTest::keyClick(&canvas, Qt::Key_S, Qt::ControlModifier);
+    // Saving stopped the run, so the file holds the instant on the canvas, and it stays there.
+    QVERIFY(!m_window->runner().isRunning());
+    QVERIFY(!m_window->playAction()->isChecked());
+    const model::SceneLoadResult saved = impetus::view::loadScene(path);
+    QVERIFY(saved.ok());
+    const Vec2 inFile = saved.world->bodies[0].state.position;
+    QVERIFY(inFile.y() > 0.04);
+    QCOMPARE(m_window->runner().world().bodies[0].state.position, inFile);
+    QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(inFile.x(), inFile.y()));
+    QTest::qWait(50);
+    QCOMPARE(m_window->runner().world().bodies[0].state.position, inFile);
+    QVERIFY(!m_window->isWindowModified());
 }
 
 QTEST_MAIN(EditorTest)
