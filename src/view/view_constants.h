@@ -141,8 +141,8 @@ inline constexpr double kPinDotFraction = 0.4;
 
 /// Opacity of the fill of a shape being drawn and of the rubber band: enough to see the area, light
 /// enough to see the bodies under it.
-inline constexpr float kPreviewFillAlpha = 0.12f;
-inline constexpr float kRubberBandFillAlpha = 0.08f;
+inline constexpr double kPreviewFillAlpha = 0.12;
+inline constexpr double kRubberBandFillAlpha = 0.08;
 
 /// Width of the selection outline drawn over selected items, px.
 inline constexpr double kSelectionWidthPx = 2.5;

@@ -15,6 +15,7 @@
 #include "view/screenshot.h"
 #include "view/simulation_runner.h"
 #include "view/tools/polygon_tool.h"
+#include "view/view_constants.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -180,6 +181,7 @@ private slots:
     void everyExampleHasATranslatableTitle();
     void escapeCancelsADragInProgress();
     void saveWhileRunningPausesAndSavesTheInstantShown();
+    void boxPreviewIsTintedWithItsAlpha();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -1246,6 +1248,25 @@ void EditorTest::saveWhileRunningPausesAndSavesTheInstantShown()
     QTest::qWait(50);
     QCOMPARE(m_window->runner().world().bodies[0].state.position, inFile);
     QVERIFY(!m_window->isWindowModified());
+}
+
+void EditorTest::boxPreviewIsTintedWithItsAlpha()
+{
+    // The box being dragged out is the preview colour at kPreviewFillAlpha over the canvas.
+    CanvasView& canvas = m_window->canvas();
+    QTest::keyClick(&canvas, Qt::Key_B);
+    const QPoint from(250, 420), to(430, 300), inside(340, 360);
+    const QColor paper = canvas.viewport()->grab().toImage().pixelColor(inside);
+    QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(canvas.viewport(), to);
+    const QColor tinted = canvas.viewport()->grab().toImage().pixelColor(inside);
+    const double alpha = impetus::view::constants::kPreviewFillAlpha;
+    const QColor preview = impetus::view::constants::kPreviewColor;
+    const auto blend = [&](int under, int over) { return static_cast<int>(std::lround(under * (1 - alpha) + over * alpha)); };
+    const QColor expected(blend(paper.red(), preview.red()), blend(paper.green(), preview.green()),
+                          blend(paper.blue(), preview.blue()));
+    QVERIFY2(near(tinted, expected, 3), qPrintable(tinted.name() + QStringLiteral(" vs ") + expected.name()));
+    QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, to);
 }
 
 QTEST_MAIN(EditorTest)

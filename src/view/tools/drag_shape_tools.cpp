@@ -70,7 +70,8 @@ void paintPreview(QPainter& painter, const QPainterPath& path)
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(constants::kPreviewFillAlpha);
+    // QColor keeps its alpha as a float; the constant is a double like every other.
+    fill.setAlphaF(static_cast<float>(constants::kPreviewFillAlpha));
     painter.setBrush(fill);
     painter.drawPath(path);
 }

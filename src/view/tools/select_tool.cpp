@@ -228,7 +228,8 @@ void SelectTool::paintOverlay(QPainter& painter, double pixelsPerMetre) const
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(constants::kRubberBandFillAlpha);
+    // QColor keeps its alpha as a float; the constant is a double like every other.
+    fill.setAlphaF(static_cast<float>(constants::kRubberBandFillAlpha));
     painter.setBrush(fill);
     painter.drawRect(QRectF(m_pressPos, m_cursor).normalized());
 }
