@@ -3,6 +3,7 @@
 
 #include "model/polygon.h"
 #include "model/scene_io.h"
+#include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"
@@ -835,12 +836,7 @@ void EditorTest::badFileShowsErrorAndSceneIsUnchanged()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("bad.json"));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
-        { "name": "a", "shape": { "type": "box", "width": -1, "height": 1 }, "position": [0, 0] },
-        { "name": "a", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
-    file.close();
+    QVERIFY(test::writeFile(path, test::kSceneWithTwoProblems));
 
     QString boxName, boxText;
     answerNextBox(this, QMessageBox::Ok, &boxName, &boxText);
@@ -997,14 +993,7 @@ void EditorTest::pinHingeFieldShowsAndEditsTheHingeWhereItIsNow()
     model::World world = emptyWorld();
     world.bodies.push_back(test::makeBody("left", model::Box{1, 0.4}, Vec2(-0.5, 0)));
     world.bodies.push_back(test::makeBody("right", model::Box{1, 0.4}, Vec2(0.5, 0)));
-    model::Joint pin;
-    pin.type = model::JointType::Pin;
-    pin.bodyA = model::BodyId{0};
-    pin.bodyB = model::BodyId{1};
-    pin.worldAnchor = Vec2(0, 0);
-    pin.anchorA = Vec2(0.5, 0);
-    pin.anchorB = Vec2(-0.5, 0);
-    world.joints.push_back(pin);
+    world.joints.push_back(test::pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2(0, 0)));
     open(world);
     CanvasView& canvas = m_window->canvas();
 

@@ -1,5 +1,6 @@
 // MainWindow, driven as a user would: keys, the default scene, opening a bad file.
 
+#include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"
@@ -271,12 +272,7 @@ void MainWindowTest::badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblem
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("bad.json"));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
-        { "name": "a", "shape": { "type": "box", "width": -1, "height": 1 }, "position": [0, 0] },
-        { "name": "a", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
-    file.close();
+    QVERIFY(test::writeFile(path, test::kSceneWithTwoProblems));
 
     MainWindow window;
     QVERIFY(showActive(window));
@@ -300,11 +296,8 @@ void MainWindowTest::badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblem
 
     // A good file opens with no box.
     const QString good = dir.filePath(QStringLiteral("good.json"));
-    QFile goodFile(good);
-    QVERIFY(goodFile.open(QIODevice::WriteOnly));
-    goodFile.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
-        { "name": "only", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
-    goodFile.close();
+    QVERIFY(test::writeFile(good, R"({ "format": "impetus-scene", "version": 1, "bodies": [
+        { "name": "only", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })"));
     QVERIFY(window.openStartupScene(good).isEmpty());
     QCOMPARE(window.runner().world().bodies.size(), std::size_t(1));
     QVERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);

@@ -21,6 +21,22 @@ inline model::Body makeBody(std::string name, model::Shape shape, Vec2 position,
     return body;
 }
 
+/// A pin hinging body `a` of `world` to body `b` at the world point `hinge`, its anchors in each
+/// body's frame taken from their current poses, as the scene loader derives them.
+inline model::Joint pinAt(const model::World& world, model::BodyId a, model::BodyId b, Vec2 hinge)
+{
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = a;
+    pin.bodyB = b;
+    pin.worldAnchor = hinge;
+    const model::BodyState& stateA = world.body(a).state;
+    const model::BodyState& stateB = world.body(b).state;
+    pin.anchorA = rotate(Vec2(hinge - stateA.position), -stateA.angle);
+    pin.anchorB = rotate(Vec2(hinge - stateB.position), -stateB.angle);
+    return pin;
+}
+
 /// No gravity; a red ball at the origin moving straight up at 1 m/s, and a fixed grey box 2 m
 /// above it that widens the framed region so the ball stays in view as it rises.
 inline model::World risingBallWorld()
