@@ -220,18 +220,6 @@ bool openOutput(std::ofstream& file, const std::string& path, std::string_view w
     return static_cast<bool>(file);
 }
 
-/// The name of the first body with a non-finite state, if any.
-std::optional<std::string> firstNonFiniteBody(const model::World& world)
-{
-    for (const model::Body& body : world.bodies) {
-        const model::BodyState& s = body.state;
-        if (!isFinite(s.position) || !isFinite(s.velocity) || !std::isfinite(s.angle) ||
-            !std::isfinite(s.angularVelocity))
-            return body.name;
-    }
-    return std::nullopt;
-}
-
 nlohmann::ordered_json vectorJson(const Vec2& v) { return nlohmann::ordered_json::array({v.x(), v.y()}); }
 
 /// The end-of-run summary in the contract's layout and key order.
@@ -425,8 +413,8 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         for (std::int64_t step = 1; step <= totalSteps; ++step) {
             simulation.step(world);
             const double time = static_cast<double>(step) * dt;
-            if (const std::optional<std::string> bad = firstNonFiniteBody(world)) {
-                err << "impetus-cli run: body '" << *bad << "' has a non-finite state at t = "
+            if (const std::optional<std::size_t> bad = controller::firstNonFiniteBody(world)) {
+                err << "impetus-cli run: body '" << world.bodies[*bad].name << "' has a non-finite state at t = "
                     << formatNumber(time) << " s (step " << step << ")\n";
                 return kExitRuntimeFailure;
             }

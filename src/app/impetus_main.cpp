@@ -13,11 +13,11 @@
 /// 1 a failure at run time (the PNG cannot be written, the simulation produced a non-finite
 /// number, the embedded default scene cannot be read).
 ///
-/// A scene given on the command line that fails to load is reported on stderr, one
-/// "FILE: path: reason" line per problem, and the app exits with 2 without opening a window. A
-/// command line is a script's or a terminal user's tool: both read stderr, and a modal dialog
-/// would hang a script. Inside the running app, File > Open shows the problems in a dialog
-/// instead and keeps the current scene.
+/// With --screenshot, a scene that fails to load is reported on stderr, one "FILE: path: reason"
+/// line per problem, and the app exits with 2 without rendering: a script reads stderr, and a
+/// dialog would hang it. Without --screenshot (a user who double-clicked a file, or typed its
+/// name), the window opens on the default scene and lists every problem in the dialog File > Open
+/// uses; the problems also go to stderr for a terminal user.
 
 #include "view/canvas_view.h"
 #include "view/main_window.h"
@@ -61,10 +61,6 @@ constexpr int kMaxScreenshotSide = 16384;
 /// hours of computing, so anything longer is a mistake.
 constexpr double kMaxScreenshotSteps = 1e9;
 
-/// Default main window size, px: fits a 1366x768 laptop screen with its panels.
-constexpr int kWindowWidth = 1200;
-constexpr int kWindowHeight = 720;
-
 QString translate(const char* text) { return QCoreApplication::translate("impetus", text); }
 
 void printError(const QString& message)
@@ -90,18 +86,6 @@ std::optional<QSize> parseSize(const QString& text)
     if (width < 1 || height < 1 || width > kMaxScreenshotSide || height > kMaxScreenshotSide)
         return std::nullopt;
     return QSize(width, height);
-}
-
-/// The name of the first body whose state is not finite, if any.
-std::optional<QString> firstNonFiniteBody(const impetus::model::World& world)
-{
-    for (const impetus::model::Body& body : world.bodies) {
-        const impetus::model::BodyState& s = body.state;
-        if (!impetus::isFinite(s.position) || !impetus::isFinite(s.velocity) || !std::isfinite(s.angle)
-            || !std::isfinite(s.angularVelocity))
-            return QString::fromStdString(body.name);
-    }
-    return std::nullopt;
 }
 
 int runScreenshot(const QString& output, const QString& runForText, const QString& sizeText,
@@ -139,6 +123,10 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
 
     view::SimulationRunner runner;
     runner.setWorld(std::move(*scene.world));
+    // The runner checks every batch of steps for a state that is not finite and reports it.
+    std::optional<std::pair<QString, double>> divergence;
+    QObject::connect(&runner, &view::SimulationRunner::diverged,
+                     [&divergence](const QString& body, double time) { divergence.emplace(body, time); });
     // The canvas exists before the run, as in the window: it frames the bodies where they were
     // loaded, and a body that flies away leaves the picture instead of shrinking it.
     view::CanvasView canvas(runner);
@@ -149,10 +137,10 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
     const auto chunk = std::max<std::int64_t>(1, std::llround(1.0 / dt));
     for (auto remaining = static_cast<std::int64_t>(steps); remaining > 0; remaining -= chunk) {
         runner.stepBy(std::min(chunk, remaining));
-        if (const std::optional<QString> body = firstNonFiniteBody(runner.world())) {
+        if (divergence) {
             printError(translate("the simulation produced a non-finite number: body “%1”, by t = %2 s")
-                           .arg(*body)
-                           .arg(runner.world().time));
+                           .arg(divergence->first)
+                           .arg(divergence->second));
             return kExitFailure;
         }
     }
@@ -238,14 +226,16 @@ int main(int argc, char* argv[])
     }
 
     view::MainWindow window;
-    const QString path = scenePath.isEmpty() ? QString::fromLatin1(view::kDefaultScenePath) : scenePath;
-    const QStringList problems = window.openScene(path);
-    if (!problems.isEmpty()) {
-        printProblems(path, problems);
-        // The embedded default scene failing is a broken build, not the user's input.
-        return scenePath.isEmpty() ? kExitFailure : kExitUsage;
+    if (scenePath.isEmpty()) {
+        const QString path = QString::fromLatin1(view::kDefaultScenePath);
+        if (const QStringList problems = window.openScene(path); !problems.isEmpty()) {
+            // The embedded default scene failing is a broken build, not the user's input.
+            printProblems(path, problems);
+            return kExitFailure;
+        }
     }
-    window.resize(kWindowWidth, kWindowHeight);
     window.show();
+    if (!scenePath.isEmpty())
+        printProblems(scenePath, window.openStartupScene(scenePath));
     return QApplication::exec();
 }

@@ -3,6 +3,7 @@
 #include "controller/force_model.h"
 #include "controller/soft_body_builder.h"
 
+#include <cmath>
 #include <vector>
 
 namespace impetus::controller {
@@ -76,6 +77,17 @@ Scalar angularMomentum(const model::World& world)
             l += grid.ellipseMass * cross(grid.positions[i], grid.velocities[i]);
     }
     return l;
+}
+
+std::optional<std::size_t> firstNonFiniteBody(const model::World& world)
+{
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const model::BodyState& s = world.bodies[i].state;
+        if (!isFinite(s.position) || !isFinite(s.velocity) || !std::isfinite(s.angle) ||
+            !std::isfinite(s.angularVelocity))
+            return i;
+    }
+    return std::nullopt;
 }
 
 } // namespace impetus::controller

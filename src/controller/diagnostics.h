@@ -1,11 +1,15 @@
 #pragma once
 /// \file diagnostics.h
-/// Conserved and monitored quantities of a world: energy, linear and angular momentum.
+/// Conserved and monitored quantities of a world: energy, linear and angular momentum, and the
+/// check for a state that is no longer a number.
 /// Fixed bodies are excluded: they have infinite mass and a prescribed motion, and counting them
 /// would only hide the changes a student is looking for.
 
 #include "model/scalar.h"
 #include "model/world.h"
+
+#include <cstddef>
+#include <optional>
 
 namespace impetus::controller {
 
@@ -31,5 +35,10 @@ Vec2 linearMomentum(const model::World& world);
 
 /// Total angular momentum about the world origin, Σ (I·ω + m·(x × v)) over dynamic bodies, kg·m²/s.
 Scalar angularMomentum(const model::World& world);
+
+/// The index of the first body whose state (position, angle, velocity or angular velocity) is not
+/// finite, if any: the sign that the simulation blew up (a step far too large for a stiff spring).
+/// Every runner checks with this after its steps: the CLI, the screenshot mode and the window.
+std::optional<std::size_t> firstNonFiniteBody(const model::World& world);
 
 } // namespace impetus::controller

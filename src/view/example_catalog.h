@@ -18,8 +18,9 @@ struct ExampleScene {
 std::vector<ExampleScene> exampleScenes();
 
 /// The title of the example file called `baseName` (no folder or extension): a translated title
-/// for the known examples ("newtons-cradle" → "Newton's cradle"), otherwise the name with dashes
-/// and underscores as spaces and a capital first letter ("box-stack" → "Box stack").
+/// for every example shipped in resources/examples ("newtons-cradle" → "Newton's cradle"); for
+/// any other name, the name with dashes and underscores as spaces and a capital first letter
+/// ("block-on-incline" → "Block on incline"), untranslated.
 QString exampleTitle(const QString& baseName);
 
 } // namespace impetus::view

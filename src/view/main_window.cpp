@@ -31,6 +31,7 @@
 #include <QUndoStack>
 
 #include <array>
+#include <memory>
 #include <utility>
 
 namespace impetus::view {
@@ -78,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     SimulationRunner& runner = m_document->runner();
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
+    connect(&runner, &SimulationRunner::diverged, this, &MainWindow::showDivergence);
     connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateSoftStatus);
@@ -86,7 +88,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_canvas, &CanvasView::spaceTapped, m_playAction, &QAction::toggle);
 
     const QSettings settings;
-    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    // The size the user left the window at wins; the default is for the first start only.
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
+        resize(constants::kDefaultWindowWidth, constants::kDefaultWindowHeight);
     restoreState(settings.value(kWindowStateKey).toByteArray());
     m_snapAction->setChecked(settings.value(kSnapKey, false).toBool());
 
@@ -195,10 +199,22 @@ void MainWindow::createActions()
     m_resetAction->setToolTip(tr("Go back to the state at the last Play (R)"));
     connect(m_resetAction, &QAction::triggered, m_document, &SceneDocument::resetToLastPlay);
 
+    // Shortcuts with Ctrl work wherever the focus is in the window.
     for (QAction* action : {m_newAction, m_openAction, m_saveAction, m_saveAsAction, m_quitAction, m_undoAction,
-                            m_redoAction, m_deleteAction, m_selectAllAction, m_snapAction, m_frameAction,
-                            m_playAction, m_stepAction, m_resetAction})
+                            m_redoAction, m_selectAllAction})
         addAction(action);
+    for (QAction* action : {m_deleteAction, m_snapAction, m_frameAction, m_playAction, m_stepAction, m_resetAction})
+        addCanvasShortcut(action);
+}
+
+void MainWindow::addCanvasShortcut(QAction* action)
+{
+    // A single key (or Del) belongs to the widget that has the focus when that is a field of the
+    // pane: Space ticks a check box, Del and the arrows edit the vertex table. So these shortcuts
+    // act only while the canvas, or a tool bar that shows the action, has the focus; the menus
+    // still show them.
+    action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_canvas->addAction(action);
 }
 
 void MainWindow::createToolActions()
@@ -233,7 +249,7 @@ void MainWindow::createToolActions()
         const ToolKind kind = entry.kind;
         connect(action, &QAction::triggered, this, [this, kind] { m_canvas->setTool(kind); });
         m_toolActions[kind] = action;
-        addAction(action);
+        addCanvasShortcut(action);
     }
     m_toolActions.at(ToolKind::Select)->setChecked(true);
     connect(m_canvas, &CanvasView::toolChanged, this, [this](ToolKind kind) { m_toolActions.at(kind)->setChecked(true); });
@@ -466,23 +482,69 @@ void MainWindow::openExample(const QString& path, const QString& title)
     m_document->setScene(std::move(*result.world), QString(), title);
 }
 
+QStringList MainWindow::openStartupScene(const QString& path)
+{
+    const QStringList problems = openScene(path);
+    if (problems.isEmpty())
+        return problems;
+    // A window with a scene to press Play on, and the problems in front of it, serve a user who
+    // double-clicked a file better than no window at all.
+    const bool defaultOpened = openScene(QString::fromLatin1(kDefaultScenePath)).isEmpty();
+    QMessageBox* box = makeProblemsBox(path, problems,
+                                       defaultOpened ? tr("The default scene is shown instead.")
+                                                     : tr("An empty scene is shown instead."));
+    // Not exec(): the caller is main(), which still has to start the application's event loop.
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
+    return problems;
+}
+
 void MainWindow::showProblems(const QString& path, const QStringList& problems)
 {
-    QMessageBox box(QMessageBox::Warning, tr("Cannot open scene"),
-                    tr("“%1” could not be opened. The current scene is unchanged.").arg(QFileInfo(path).fileName()),
-                    QMessageBox::Ok, this);
-    box.setObjectName(QStringLiteral("openErrorBox"));
+    std::unique_ptr<QMessageBox> box(makeProblemsBox(path, problems, tr("The current scene is unchanged.")));
+    box->exec();
+}
+
+QMessageBox* MainWindow::makeProblemsBox(const QString& path, const QStringList& problems, const QString& outcome)
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"),
+                                tr("“%1” could not be opened. %2").arg(QFileInfo(path).fileName(), outcome),
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("openErrorBox"));
     QStringList shown = problems.mid(0, kProblemsShown);
     if (problems.size() > kProblemsShown) {
         shown << tr("…and %n more.", nullptr, static_cast<int>(problems.size() - kProblemsShown));
-        box.setDetailedText(problems.join(QLatin1Char('\n')));
+        box->setDetailedText(problems.join(QLatin1Char('\n')));
     }
-    box.setInformativeText(shown.join(QLatin1Char('\n')));
-    box.exec();
+    box->setInformativeText(shown.join(QLatin1Char('\n')));
+    return box;
+}
+
+void MainWindow::showDivergence(const QString& bodyName, double time)
+{
+    // Window-modal and not waiting for an answer: the report comes from inside a timer tick, and
+    // a nested event loop there would only invite more ticks.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("The simulation blew up"),
+                                tr("Body “%1” got a position or velocity that is not a finite number by t = %2 s.")
+                                    .arg(bodyName)
+                                    .arg(time, 0, 'g', 6),
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("divergedBox"));
+    box->setInformativeText(tr("The run stopped at the last finite state. The time step is too large for the "
+                               "stiffest spring or the fastest motion in the scene. Press Reset (R) to go back to "
+                               "where you pressed Play, or Undo (Ctrl+Z); then try a smaller time step or a softer "
+                               "spring."));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
 }
 
 bool MainWindow::saveTo(const QString& path)
 {
+    // A file holds one instant: the one on the canvas. Saving while the run goes on would write
+    // the world at some step after the one the user chose to keep, and go on changing it.
+    m_document->runner().pause();
     if (const std::optional<QString> error = m_document->saveAs(path)) {
         QMessageBox box(QMessageBox::Warning, tr("Cannot save scene"),
                         tr("The scene could not be saved to “%1”. Nothing was overwritten.").arg(path), QMessageBox::Ok,
@@ -498,6 +560,7 @@ bool MainWindow::saveTo(const QString& path)
 
 bool MainWindow::save()
 {
+    m_document->runner().pause();
     if (m_document->filePath().isEmpty())
         return saveAsDialog();
     return saveTo(m_document->filePath());
@@ -505,6 +568,8 @@ bool MainWindow::save()
 
 bool MainWindow::saveAsDialog()
 {
+    // Paused before the file dialog, so the instant saved is the one on screen when asked.
+    m_document->runner().pause();
     QString path = QFileDialog::getSaveFileName(this, tr("Save Scene"), m_lastDirectory,
                                                 tr("Impetus scenes (*.json);;All files (*)"));
     if (path.isEmpty())

@@ -20,6 +20,7 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QMessageBox;
 
 namespace impetus::view {
 
@@ -29,7 +30,9 @@ class SceneDocument;
 class SimulationRunner;
 
 /// The application window. The canvas is the central widget; a tool bar on the left holds the
-/// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed); the
+/// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed). The
+/// one-key shortcuts (those, Del, G, Home and the tool letters) act while the canvas or a tool bar
+/// has the focus, so that the attribute pane keeps its keys; the Ctrl shortcuts act anywhere. The
 /// status bar shows the simulated time, the energies, the momentum and the collision count. The
 /// attributes dock (object name "attributesDock") sits on the right. Menus: File (New, Open, Open
 /// Recent, Save, Save As, Quit), Edit (Undo, Redo, Delete, Select All), View, Tools, Simulation
@@ -37,7 +40,12 @@ class SimulationRunner;
 ///
 /// Before discarding edits that are not saved (New, Open, an example, closing) the window asks
 /// with a QMessageBox whose object name is "unsavedChangesBox". The dock layout and the window
-/// geometry are kept in QSettings.
+/// geometry are kept in QSettings; a window with no saved geometry starts at
+/// constants::kDefaultWindowWidth × kDefaultWindowHeight.
+///
+/// When a run produces a state that is not a finite number (SimulationRunner::diverged()), the
+/// run stops on the last finite state and a window-modal message box (object name "divergedBox")
+/// names the body and the time and suggests Reset or Undo.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -56,17 +64,24 @@ public:
     /// Returns true when the scene was opened.
     bool openSceneInteractively(const QString& path);
 
+    /// What `impetus SCENE.json` does: opens the scene at `path` like openScene(). When it fails to
+    /// load, the default example scene is opened instead and the problems are listed in the same
+    /// box as File > Open's (object name "openErrorBox"), window-modal, without waiting for it to
+    /// be closed. Returns the problems, one "path: reason" line each; empty when `path` opened.
+    QStringList openStartupScene(const QString& path);
+
     /// Shows `world` (paused) under the name `name`, with no file.
     void setScene(model::World world, const QString& name);
 
     /// File > New: an empty scene, after asking about unsaved edits. True when done.
     bool newScene();
 
-    /// Saves to `path` and makes it the scene's file; a failure shows a message box (object name
-    /// "saveErrorBox"). True when saved.
+    /// Pauses a run, then saves to `path` (the instant on the canvas) and makes it the scene's
+    /// file; a failure shows a message box (object name "saveErrorBox"). True when saved.
     bool saveTo(const QString& path);
 
-    /// File > Save: saves to the scene's file, or asks for one (Save As) when it has none.
+    /// File > Save: pauses a run, then saves to the scene's file, or asks for one (Save As) when it
+    /// has none.
     bool save();
 
     /// Asks whether to save unsaved edits (Save, Discard, Cancel) if there are any. True when the
@@ -135,6 +150,7 @@ private:
     /// rigid and soft (controller::compareRigidSoft) and shows how far apart their centres of mass
     /// drift.
     void compareSelectedWithRigid();
+    void addCanvasShortcut(QAction* action);
     void openSceneDialog();
     bool saveAsDialog();
     void openExample(const QString& path, const QString& title);
@@ -144,6 +160,8 @@ private:
     void updateStatus();
     void updateTitle();
     void showProblems(const QString& path, const QStringList& problems);
+    QMessageBox* makeProblemsBox(const QString& path, const QStringList& problems, const QString& outcome);
+    void showDivergence(const QString& bodyName, double time);
 
     SceneDocument* m_document;
     CanvasView* m_canvas;

@@ -1,6 +1,7 @@
 #include "view/property_pane.h"
 
 #include "model/polygon.h"
+#include "view/view_constants.h"
 
 #include <QAccessible>
 #include <QApplication>
@@ -306,7 +307,15 @@ void PropertyPane::buildWorldPage()
 
     addNumber(Page::World, form, QStringLiteral("timeStep"), tr("Time step"), tr("s"), Bound::Positive,
               [this] { return m_settings.timeStep; },
-              editWorld([](model::WorldSettings& s, double v) { s.timeStep = v; }, tr("Change time step")));
+              [this, apply = editWorld([](model::WorldSettings& s, double v) { s.timeStep = v; },
+                                       tr("Change time step"))](double value) -> std::optional<QString> {
+                  if (value < constants::kMinEditableTimeStep || value > constants::kMaxEditableTimeStep) {
+                      return tr("Time step must be from %1 s to %2 s (got %3 s).")
+                          .arg(formatNumber(constants::kMinEditableTimeStep),
+                               formatNumber(constants::kMaxEditableTimeStep), formatNumber(value));
+                  }
+                  return apply(value);
+              });
     addNumber(Page::World, form, QStringLiteral("drag"), tr("Drag"), tr("N·s/m"), Bound::NonNegative,
               [this] { return m_settings.drag; },
               editWorld([](model::WorldSettings& s, double v) { s.drag = v; }, tr("Change drag")));
@@ -585,7 +594,7 @@ std::optional<QString> PropertyPane::commitJoint(model::Joint joint, const QStri
                                       : joint.anchorB;
         joint.length = (endB - endA).norm();
         const double scale = std::max({1.0, endA.norm(), endB.norm()});
-        if (!(joint.length > constants::kRelativePointTolerance * scale))
+        if (!(joint.length > impetus::constants::kRelativePointTolerance * scale))
             return tr("A rod needs two different ends: both anchors are at the same point.");
     }
     if (joint == m_joint)
@@ -901,6 +910,13 @@ void PropertyPane::load(const model::World& world)
         m_endNameB = nameOf(m_joint.bodyB);
         m_endStateA = stateOf(m_joint.bodyA).value_or(model::BodyState{});
         m_endStateB = stateOf(m_joint.bodyB);
+        // The pin's worldAnchor is where it was made; bodies moved since. Show and edit the hinge
+        // where it is now: on body A, or the fixed world point of a pin to the world.
+        if (m_joint.type == model::JointType::Pin) {
+            m_joint.worldAnchor = m_joint.bodyB
+                ? Vec2(m_endStateA.position + rotate(m_joint.anchorA, m_endStateA.angle))
+                : m_joint.anchorB;
+        }
     }
 }
 

@@ -30,8 +30,9 @@ namespace impetus::view {
 
 /// Shows and edits the attributes of what is selected: one body (name, size or vertex table,
 /// pose, velocities, density or mass, material, fixed, colour, soft mode), one spring (anchors,
-/// stiffness, damping, rest length), one joint (anchors; a rod's length read-only), or the world
-/// settings (gravity, integrator, time step, drag) when nothing is selected.
+/// stiffness, damping, rest length), one joint (a pin's hinge where it is now, as a world point;
+/// a rod's anchors, its length read-only), or the world settings (gravity, integrator, time step,
+/// drag) when nothing is selected.
 ///
 /// The pane never changes the world itself. A valid edit emits exactly one of the *Edited signals,
 /// when the user presses Enter, leaves the field, or picks from a combo box; the lead wires them to

@@ -9,10 +9,15 @@ namespace impetus::view {
 
 namespace {
 
-/// Applies `map` to every body reference of the springs and joints of `world`.
+/// Applies `map` to every body reference of the springs, joints and contacts of `world`. `map`
+/// keeps the order of indices, so the contacts stay sorted.
 void remapBodyIds(model::World& world, const std::function<std::uint32_t(std::uint32_t)>& map)
 {
     const auto remap = [&](model::BodyId& id) { id.index = map(id.index); };
+    for (model::ContactRecord& contact : world.contacts) {
+        remap(contact.bodyA);
+        remap(contact.bodyB);
+    }
     for (model::Spring& spring : world.springs) {
         remap(spring.bodyA);
         if (spring.bodyB)
@@ -58,7 +63,28 @@ std::vector<BodyPose> posesOf(const model::World& world, const std::vector<int>&
     return poses;
 }
 
+/// Sets each body's `colliding` flag from the touching contacts of `world`, as a step does.
+void markColliding(model::World& world)
+{
+    for (model::Body& body : world.bodies)
+        body.colliding = false;
+    for (const model::ContactRecord& contact : world.contacts) {
+        if (contact.touching) {
+            world.body(contact.bodyA).colliding = true;
+            world.body(contact.bodyB).colliding = true;
+        }
+    }
+}
+
 } // namespace
+
+void forgetContactsOf(model::World& world, const std::function<bool(std::uint32_t)>& affected)
+{
+    std::erase_if(world.contacts, [&](const model::ContactRecord& contact) {
+        return affected(contact.bodyA.index) || affected(contact.bodyB.index);
+    });
+    markColliding(world);
+}
 
 SetWorldSettingsCommand::SetWorldSettingsCommand(SceneDocument& document, const model::WorldSettings& settings,
                                                  const QString& name)
@@ -106,16 +132,19 @@ RemoveCommand::RemoveCommand(SceneDocument& document, const Selection& selection
 void RemoveCommand::redo()
 {
     m_document.applyEdit([&](model::World& world) {
+        const auto removed = [&](std::uint32_t index) {
+            return std::ranges::any_of(m_bodies, [&](const auto& body) { return body.first == index; });
+        };
+        forgetContactsOf(world, removed);
         eraseAt(world.springs, m_springs);
         eraseAt(world.joints, m_joints);
         eraseAt(world.bodies, m_bodies);
         // A body keeps its place in the order; it moves down by the number of removed bodies
-        // before it. No spring or joint that stays refers to a removed body.
+        // before it. No spring, joint or contact that stays refers to a removed body.
         remapBodyIds(world, [&](std::uint32_t index) {
-            const auto below = std::ranges::count_if(m_bodies, [&](const auto& removed) { return removed.first < index; });
+            const auto below = std::ranges::count_if(m_bodies, [&](const auto& body) { return body.first < index; });
             return index - static_cast<std::uint32_t>(below);
         });
-        world.contacts.clear();
     });
 }
 
@@ -137,7 +166,8 @@ void RemoveCommand::undo()
         insertAt(world.bodies, m_bodies);
         insertAt(world.springs, m_springs);
         insertAt(world.joints, m_joints);
-        world.contacts.clear();
+        // The bodies that come back have no contacts (they may be elsewhere by the next step).
+        markColliding(world);
     });
 }
 
@@ -150,6 +180,9 @@ SetPosesCommand::SetPosesCommand(SceneDocument& document, std::vector<int> indic
     , m_after(std::move(poses))
     , m_gesture(gesture)
 {
+    // A command that changes nothing (a drag given up, a snap to where the body is) is dropped
+    // by the stack instead of leaving an empty "Move" to undo.
+    setObsolete(m_after == m_before);
 }
 
 void SetPosesCommand::redo() { put(m_after); }
@@ -162,12 +195,21 @@ bool SetPosesCommand::mergeWith(const QUndoCommand* other)
     if (next->m_gesture != m_gesture || next->m_indices != m_indices)
         return false;
     m_after = next->m_after;
+    // A drag that came back to its start, or was given up: the stack drops the whole command.
+    setObsolete(m_after == m_before);
     return true;
 }
 
 void SetPosesCommand::put(const std::vector<BodyPose>& poses)
 {
     m_document.applyEdit([&](model::World& world) {
+        forgetContactsOf(world, [&](std::uint32_t index) {
+            const auto it = std::ranges::find(m_indices, static_cast<int>(index));
+            if (it == m_indices.end())
+                return false;
+            const model::BodyState& state = world.bodies[index].state;
+            return poses[static_cast<std::size_t>(it - m_indices.begin())] != BodyPose{state.position, state.angle};
+        });
         for (std::size_t k = 0; k < m_indices.size(); ++k) {
             model::BodyState& state = world.bodies[static_cast<std::size_t>(m_indices[k])].state;
             state.position = poses[k].position;

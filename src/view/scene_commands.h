@@ -9,12 +9,22 @@
 
 #include <QUndoCommand>
 
+#include <cstdint>
+#include <functional>
+
 #include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace impetus::view {
+
+/// Forgets the contacts of the bodies for which `affected(index)` is true (removed, moved or
+/// reshaped: what the records say of them is no longer so, and their warm-start impulses belong to
+/// old pieces), and sets every body's `colliding` flag from the contacts that stay, so that a body
+/// whose only partner went away is drawn in its own colour at once. The contacts of other bodies
+/// stay, so a stack at rest elsewhere neither flickers nor counts its contacts again.
+void forgetContactsOf(model::World& world, const std::function<bool(std::uint32_t)>& affected);
 
 /// Ids for QUndoCommand::id(): commands with the same id may merge.
 enum class CommandId { SetPoses = 1, Step = 2 };
@@ -33,6 +43,12 @@ auto& elementsOf(W& world)
 }
 
 /// Replaces one body, spring or joint; undo puts the previous value back.
+///
+/// A body edit whose new value has the same state as the body had (an attribute edit: friction,
+/// colour, size, … but not position, angle or velocities) changes the attributes alone, on redo and
+/// undo alike: the body keeps the state it has by then, and its collision flag and count, so that
+/// undoing a change made during a run does not send the body back to where it was at the edit.
+/// A body edit that changes the shape or the pose forgets that body's contacts (forgetContactsOf).
 template <class T>
 class SetElementCommand : public QUndoCommand {
 public:
@@ -44,6 +60,8 @@ public:
         , m_before(elementsOf<T>(document.world())[m_index])
         , m_after(std::move(value))
     {
+        if constexpr (std::is_same_v<T, model::Body>)
+            m_attributesOnly = m_before.state == m_after.state;
     }
     /// Puts in the new value.
     void redo() override { put(m_after); }
@@ -53,13 +71,33 @@ public:
 private:
     void put(const T& value)
     {
-        m_document.applyEdit([&](model::World& world) { elementsOf<T>(world)[m_index] = value; });
+        m_document.applyEdit([&](model::World& world) {
+            T& element = elementsOf<T>(world)[m_index];
+            if constexpr (std::is_same_v<T, model::Body>) {
+                const bool moved = !m_attributesOnly
+                    && (value.state.position != element.state.position || value.state.angle != element.state.angle);
+                if (moved || value.shape != element.shape) {
+                    const auto index = static_cast<std::uint32_t>(m_index);
+                    forgetContactsOf(world, [index](std::uint32_t i) { return i == index; });
+                }
+                if (m_attributesOnly) {
+                    model::Body body = value;
+                    body.state = element.state;
+                    body.colliding = element.colliding;
+                    body.collisionCount = element.collisionCount;
+                    element = std::move(body);
+                    return;
+                }
+            }
+            element = value;
+        });
     }
 
     SceneDocument& m_document;
     std::size_t m_index;
     T m_before;
     T m_after;
+    bool m_attributesOnly = false; ///< a body edit that leaves the state alone
 };
 
 /// Appends a body, spring or joint; undo removes it again.
@@ -73,22 +111,21 @@ public:
         , m_value(std::move(value))
     {
     }
-    /// Appends the element.
+    /// Appends the element. (A new body is at the end, so no contact record changes meaning.)
     void redo() override
     {
-        m_document.applyEdit([&](model::World& world) {
-            elementsOf<T>(world).push_back(m_value);
-            // Contact records name bodies by index; a new body changes none, but the list is
-            // cleared anyway on every change of the body list so one rule covers every edit.
-            world.contacts.clear();
-        });
+        m_document.applyEdit([&](model::World& world) { elementsOf<T>(world).push_back(m_value); });
     }
-    /// Removes the last element, which is the one appended.
+    /// Removes the last element, which is the one appended, with the contacts of a body.
     void undo() override
     {
         m_document.applyEdit([&](model::World& world) {
-            elementsOf<T>(world).pop_back();
-            world.contacts.clear();
+            auto& elements = elementsOf<T>(world);
+            if constexpr (std::is_same_v<T, model::Body>) {
+                const auto last = static_cast<std::uint32_t>(elements.size() - 1);
+                forgetContactsOf(world, [last](std::uint32_t i) { return i == last; });
+            }
+            elements.pop_back();
         });
     }
 
@@ -131,7 +168,8 @@ private:
 };
 
 /// Sets the position and angle of some bodies. Merges with the next SetPosesCommand of the same
-/// gesture and bodies, so a drag is one undo step.
+/// gesture and bodies, so a drag is one undo step; a command that ends up changing nothing is
+/// obsolete, and the stack drops it.
 class SetPosesCommand : public QUndoCommand {
 public:
     /// Sets bodies `indices` (valid) of `document` to `poses`, as part of `gesture`.

@@ -1,7 +1,7 @@
 #include "view/simulation_runner.h"
 
+#include "controller/diagnostics.h"
 #include "controller/soft_body_builder.h"
-
 #include "view/view_constants.h"
 
 #include <algorithm>
@@ -9,6 +9,14 @@
 #include <utility>
 
 namespace impetus::view {
+
+namespace {
+
+/// Largest step count maxStepsPerFrame() reports: far beyond what a tick can take, and below
+/// 2⁶³ ≈ 9.2·10¹⁸, so that converting it to std::int64_t is defined.
+constexpr double kLargestStepCount = 1e18;
+
+} // namespace
 
 SimulationRunner::SimulationRunner(QObject* parent)
     : QObject(parent)
@@ -47,8 +55,10 @@ void SimulationRunner::setSpeed(double speed)
 
 std::int64_t SimulationRunner::maxStepsPerFrame() const
 {
+    // A time step of 1e-300 s asks for 10²⁹⁹ steps, which no integer holds: clamp before converting
+    // (a NaN, from a step that is not positive, fails the comparison and clamps too).
     const double steps = std::floor(constants::kMaxSimulatedTimePerFrame / m_world.settings.timeStep);
-    return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+    return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps < kLargestStepCount ? steps : kLargestStepCount));
 }
 
 std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
@@ -58,18 +68,26 @@ std::int64_t SimulationRunner::advanceWallTime(double wallSeconds)
         return 0;
     m_accumulator += wallSeconds * m_speed;
     const std::int64_t maxSteps = maxStepsPerFrame();
+    if (!(m_accumulator >= dt))
+        return 0;
+    model::World before = m_world;
+    QElapsedTimer wallClock;
+    wallClock.start();
+    const auto budgetNs = static_cast<qint64>(constants::kMaxSteppingWallTimePerTickMs * 1e6);
     std::int64_t steps = 0;
     while (m_accumulator >= dt && steps < maxSteps) {
         m_simulation.step(m_world);
         m_accumulator -= dt;
         ++steps;
+        if (wallClock.nsecsElapsed() >= budgetNs)
+            break;
     }
-    // The frame owed more than we may simulate in one tick: drop the backlog so that simulated
-    // time slows down for a moment instead of the next frames trying (and failing) to catch up.
+    // The frame owed more than we may simulate in one tick, or the steps took longer than the
+    // tick may: drop the backlog so that simulated time slows down instead of the next frames
+    // trying (and failing) to catch up while the window stops answering.
     if (m_accumulator >= dt)
         m_accumulator = 0;
-    if (steps > 0)
-        emit stepped();
+    finishBatch(steps, std::move(before));
     return steps;
 }
 
@@ -133,9 +151,29 @@ void SimulationRunner::onTimerTick()
 
 void SimulationRunner::takeSteps(std::int64_t count)
 {
+    model::World before = m_world;
     for (std::int64_t i = 0; i < count; ++i)
         m_simulation.step(m_world);
-    emit stepped();
+    finishBatch(count, std::move(before));
+}
+
+void SimulationRunner::finishBatch(std::int64_t steps, model::World before)
+{
+    if (steps <= 0)
+        return;
+    const std::optional<std::size_t> bad = controller::firstNonFiniteBody(m_world);
+    if (!bad) {
+        emit stepped();
+        return;
+    }
+    // Not a number spreads to every body it touches and cannot be drawn: keep the last finite
+    // world, which the view still shows, and stop, so that the user can read it, reset or undo.
+    const QString name = QString::fromStdString(m_world.bodies[*bad].name);
+    const double time = m_world.time;
+    m_world = std::move(before);
+    m_accumulator = 0;
+    pause();
+    emit diverged(name, time);
 }
 
 } // namespace impetus::view

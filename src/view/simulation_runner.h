@@ -8,6 +8,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QString>
 #include <QTimer>
 
 #include <cstdint>
@@ -20,9 +21,16 @@ namespace impetus::view {
 ///
 /// Each timer tick adds the elapsed wall time × speed() to an accumulator and calls
 /// Simulation::step() with the world's fixed time step while the accumulator holds at least one
-/// step. At most constants::kMaxSimulatedTimePerFrame of simulated time is taken per tick; wall
-/// time beyond that is dropped, so a slow frame slows simulated time down but never changes the
-/// step. The physics therefore gives the same bits whatever the frame rate.
+/// step. At most constants::kMaxSimulatedTimePerFrame of simulated time, and at most
+/// constants::kMaxSteppingWallTimePerTickMs of wall time spent stepping, are taken per tick; the
+/// backlog beyond either is dropped, so a slow frame (or a tiny time step) slows simulated time
+/// down but never changes the step. The physics therefore gives the same bits whatever the frame
+/// rate.
+///
+/// After every batch of steps (a tick, a Step, stepBy()) the runner checks the world with
+/// controller::firstNonFiniteBody(). A batch that left a body's state not finite is taken back:
+/// the runner puts back the world from before that batch (the last finite one, which the view
+/// still shows), pauses and emits diverged(). The world at the last play() stays for a reset.
 class SimulationRunner : public QObject {
     Q_OBJECT
 
@@ -55,12 +63,13 @@ public:
     const std::optional<model::World>& worldAtLastPlay() const { return m_worldAtLastPlay; }
 
     /// The most fixed steps one timer tick takes: the steps in constants::kMaxSimulatedTimePerFrame,
-    /// at least one.
+    /// at least one, and at most 10¹⁸ (however small the time step).
     std::int64_t maxStepsPerFrame() const;
 
     /// Adds `wallSeconds` × speed() to the accumulator and takes fixed steps while it holds one,
-    /// up to maxStepsPerFrame(); a backlog beyond that is dropped. Emits stepped() once if it
-    /// stepped. Returns the number of steps taken. The timer calls this with the measured frame
+    /// up to maxStepsPerFrame() and for at most constants::kMaxSteppingWallTimePerTickMs of wall
+    /// time; a backlog beyond either is dropped. Emits stepped() once if it
+    /// stepped (or diverged() instead, see the class comment). Returns the number of steps taken. The timer calls this with the measured frame
     /// time; tests call it directly.
     std::int64_t advanceWallTime(double wallSeconds);
 
@@ -99,9 +108,17 @@ signals:
     /// The runner started (true) or stopped (false).
     void runningChanged(bool running);
 
+    /// A batch of steps gave body `bodyName` a position, angle or velocity that is not a finite
+    /// number by simulated time `time` (s): the step is too large for a stiff spring or a fast
+    /// motion. The runner has paused and put back the world from before that batch.
+    void diverged(const QString& bodyName, double time);
+
 private:
     void onTimerTick();
     void takeSteps(std::int64_t count);
+    /// Ends a batch of `steps` steps that began from `before`: emits stepped(), or, when the world
+    /// is no longer finite, puts `before` back, pauses and emits diverged().
+    void finishBatch(std::int64_t steps, model::World before);
 
     model::World m_world;
     std::optional<model::World> m_worldAtLastPlay;

@@ -20,6 +20,18 @@ inline constexpr int kFrameIntervalMs = 16;
 /// backlog that freezes the window (the "spiral of death").
 inline constexpr double kMaxSimulatedTimePerFrame = 0.1;
 
+/// The most wall time one timer tick may spend stepping, ms. A 16 ms frame keeps about 4 ms for
+/// painting and input. A tick that runs out stops stepping and drops the rest of its backlog, as
+/// for kMaxSimulatedTimePerFrame: simulated time slows down, the step never changes, and a time
+/// step far too small for the machine (or a very large scene) leaves the window responsive.
+inline constexpr double kMaxSteppingWallTimePerTickMs = 12.0;
+
+/// The time steps the attribute pane accepts, s. Below 10 µs a classroom scene needs more than
+/// 100 000 steps per simulated second, so it crawls; above 0.1 s (10 Hz) contacts and springs are
+/// resolved too coarsely to mean anything. A scene file may hold any positive step.
+inline constexpr double kMinEditableTimeStep = 1e-5;
+inline constexpr double kMaxEditableTimeStep = 0.1;
+
 /// Space left around the bodies when a scene is framed, as a fraction of the larger side of their
 /// bounding box, on each side. 8 % keeps outlines off the window edge without wasting the canvas.
 inline constexpr double kFrameMarginFraction = 0.08;
@@ -94,6 +106,11 @@ inline constexpr double kSpringLeadFraction = 0.1;
 /// Radius of the marker drawn at a spring's fixed world anchor, px.
 inline constexpr double kAnchorMarkerRadiusPx = 4.0;
 
+/// Size of the main window on its first start, px, before QSettings holds the size the user
+/// left it at: fits a 1366x768 laptop screen with its panels.
+inline constexpr int kDefaultWindowWidth = 1200;
+inline constexpr int kDefaultWindowHeight = 720;
+
 /// Most commands the undo stack keeps. A run keeps two copies of the world, so a long session with
 /// a large scene must not keep every one; 200 is far more undo than a lesson needs.
 inline constexpr int kUndoLimit = 200;
@@ -142,8 +159,8 @@ inline constexpr double kPinDotFraction = 0.4;
 
 /// Opacity of the fill of a shape being drawn and of the rubber band: enough to see the area, light
 /// enough to see the bodies under it.
-inline constexpr float kPreviewFillAlpha = 0.12f;
-inline constexpr float kRubberBandFillAlpha = 0.08f;
+inline constexpr double kPreviewFillAlpha = 0.12;
+inline constexpr double kRubberBandFillAlpha = 0.08;
 
 /// Width of the selection outline drawn over selected items, px.
 inline constexpr double kSelectionWidthPx = 2.5;

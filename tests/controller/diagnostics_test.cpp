@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace impetus::controller {
 namespace {
 
@@ -68,6 +70,24 @@ TEST(Diagnostics, FixedBodiesAreLeftOut)
     EXPECT_EQ(e.potential, 0);
     EXPECT_EQ(linearMomentum(world), Vec2::Zero());
     EXPECT_EQ(angularMomentum(world), 0);
+}
+
+TEST(Diagnostics, FirstNonFiniteBodyNamesTheFirstBodyThatIsNotANumber)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 0.01);
+    world.bodies.push_back(makeBall("a", 1.0, 0.1, Vec2(0, 0)));
+    world.bodies.push_back(makeBall("b", 1.0, 0.1, Vec2(1, 0)));
+    world.bodies.push_back(makeBall("c", 1.0, 0.1, Vec2(2, 0)));
+    EXPECT_EQ(firstNonFiniteBody(world), std::nullopt);
+    world.bodies[2].state.angularVelocity = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(firstNonFiniteBody(world), std::optional<std::size_t>(2));
+    world.bodies[1].state.velocity.y() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(firstNonFiniteBody(world), std::optional<std::size_t>(1));
+    world.bodies[1].state.velocity.y() = 0;
+    world.bodies[1].state.angle = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(firstNonFiniteBody(world), std::optional<std::size_t>(1));
+    world.bodies[0].state.position.x() = -std::numeric_limits<double>::infinity();
+    EXPECT_EQ(firstNonFiniteBody(world), std::optional<std::size_t>(0));
 }
 
 } // namespace

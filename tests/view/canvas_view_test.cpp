@@ -6,6 +6,7 @@
 #include "view/screenshot.h"
 #include "view/simulation_runner.h"
 #include "view/spring_item.h"
+#include "view/view_constants.h"
 
 #include <QImage>
 #include <QTest>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <type_traits>
 
 using impetus::view::BodyItem;
 using impetus::view::CanvasView;
@@ -21,6 +23,10 @@ namespace model = impetus::model;
 namespace test = impetus::view::test;
 
 namespace {
+
+// One precision (DESIGN.md): the view's tuning constants are doubles too, no `f` literals.
+static_assert(std::is_same_v<decltype(impetus::view::constants::kPreviewFillAlpha), const double>);
+static_assert(std::is_same_v<decltype(impetus::view::constants::kRubberBandFillAlpha), const double>);
 
 /// Mean row of the pixels that are clearly pure red (the rising ball's fill), if any.
 std::optional<double> meanRedRow(const QImage& image)

@@ -95,7 +95,7 @@ private slots:
     void badArgumentsExitWithTwo_data();
     void badArgumentsExitWithTwo();
     void unwritableOutputExitsWithOne();
-    void openingBadSceneExitsWithTwo();
+    void screenshotOfRunThatBlowsUpExitsWithOne();
     void helpExitsWithZero();
 
 private:
@@ -262,15 +262,22 @@ void CommandLineTest::unwritableOutputExitsWithOne()
     QVERIFY(!run.stdErr.isEmpty());
 }
 
-void CommandLineTest::openingBadSceneExitsWithTwo()
+void CommandLineTest::screenshotOfRunThatBlowsUpExitsWithOne()
 {
-    // Without --screenshot a bad scene is reported on stderr, one line per problem naming the
-    // file, and no window opens (the process ends by itself).
-    const QString badScene = m_dir->filePath(QStringLiteral("bad.json"));
-    QVERIFY(writeFile(badScene, R"({ "format": "impetus-scene", "version": 1, "bodies": 3 })"));
-    const Run run = runImpetus({badScene});
-    QCOMPARE(run.exitCode, 2);
-    QVERIFY(run.stdErr.contains(badScene + QStringLiteral(": bodies")));
+    // A spring far too stiff for the step: the state stops being a number, the contract's exit 1
+    // naming the body and the time, and no picture of it.
+    QVERIFY(writeFile(scenePath(), R"({ "format": "impetus-scene", "version": 1,
+        "world": { "gravity": [0, 0], "integrator": "euler", "timeStep": 0.1 },
+        "bodies": [ { "name": "bob", "shape": { "type": "circle", "radius": 0.05 }, "position": [1, 0], "mass": 0.001 } ],
+        "springs": [ { "bodyA": "bob", "anchorA": [0, 0], "bodyB": null, "anchorB": [0, 0],
+                       "stiffness": 1000000, "restLength": 0 } ] })"));
+    const Run run = runImpetus({QStringLiteral("--screenshot"), outputPath(), QStringLiteral("--run-for"),
+                                QStringLiteral("500"), scenePath()});
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY2(run.stdErr.contains(QStringLiteral("non-finite")) && run.stdErr.contains(QStringLiteral("“bob”"))
+                 && run.stdErr.contains(QStringLiteral("t = ")),
+             qPrintable(run.stdErr));
+    QVERIFY(!QFile::exists(outputPath()));
 }
 
 void CommandLineTest::helpExitsWithZero()

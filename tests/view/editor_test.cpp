@@ -3,6 +3,7 @@
 
 #include "model/polygon.h"
 #include "model/scene_io.h"
+#include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"
@@ -15,9 +16,11 @@
 #include "view/screenshot.h"
 #include "view/simulation_runner.h"
 #include "view/tools/polygon_tool.h"
+#include "view/view_constants.h"
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QCheckBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
@@ -27,10 +30,12 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QLineEdit>
 #include <QTest>
 #include <QTimer>
+#include <QTranslator>
 #include <QToolTip>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -70,6 +75,19 @@ model::World approachingDiscs()
     }
     return world;
 }
+
+/// A translator that marks every example title it translates, «like this»: a title that comes out
+/// unmarked did not go through tr().
+class MarkingTranslator : public QTranslator {
+public:
+    bool isEmpty() const override { return false; }
+    QString translate(const char* context, const char* sourceText, const char* = nullptr, int = -1) const override
+    {
+        if (QLatin1String(context) != QLatin1String("impetus::view::Examples"))
+            return {};
+        return QStringLiteral("«%1»").arg(QString::fromUtf8(sourceText));
+    }
+};
 
 /// An action's text without its mnemonic ampersand: what the menu shows.
 QString shownText(const QAction* action) { return action->text().remove(QLatin1Char('&')); }
@@ -156,6 +174,15 @@ private slots:
     void examplesMenuListsAndOpensExamples();
     void dockLayoutIsRemembered();
     void screenshotRendersRedWithoutSelection();
+    void undoingAnAttributeEditKeepsTheBodyWhereItIs();
+    void pinHingeFieldShowsAndEditsTheHingeWhereItIsNow();
+    void spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay();
+    void deleteAndArrowsInTheVertexTableStayInTheTable();
+    void deletingOrMovingAPartnerEndsTheRed();
+    void everyExampleHasATranslatableTitle();
+    void escapeCancelsADragInProgress();
+    void saveWhileRunningPausesAndSavesTheInstantShown();
+    void boxPreviewIsTintedWithItsAlpha();
 
 private:
     /// A window showing `world`, shown and active so that shortcuts work.
@@ -809,12 +836,7 @@ void EditorTest::badFileShowsErrorAndSceneIsUnchanged()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("bad.json"));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({ "format": "impetus-scene", "version": 1, "bodies": [
-        { "name": "a", "shape": { "type": "box", "width": -1, "height": 1 }, "position": [0, 0] },
-        { "name": "a", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })");
-    file.close();
+    QVERIFY(test::writeFile(path, test::kSceneWithTwoProblems));
 
     QString boxName, boxText;
     answerNextBox(this, QMessageBox::Ok, &boxName, &boxText);
@@ -923,6 +945,317 @@ void EditorTest::screenshotRendersRedWithoutSelection()
     const QPoint inside = canvas.toView(QPointF(p.x(), p.y() + 0.15)).toPoint();
     QVERIFY2(near(image.pixelColor(inside), QColor(0xdc, 0x26, 0x26)), qPrintable(image.pixelColor(inside).name()));
     QCOMPARE(canvas.tool(), nullptr);
+}
+
+void EditorTest::undoingAnAttributeEditKeepsTheBodyWhereItIs()
+{
+    open(test::risingBallWorld());
+    CanvasView& canvas = m_window->canvas();
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{0}, {}, {}}));
+    const model::World& world = m_window->runner().world();
+
+    // Run, and change the ball's friction in the pane while it runs.
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QTRY_VERIFY(world.time > 0.05);
+    auto* friction = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("friction"));
+    QVERIFY(friction);
+    friction->setFocus();
+    friction->selectAll();
+    QTest::keyClicks(friction, QStringLiteral("0.9"));
+    QTest::keyClick(friction, Qt::Key_Return);
+    QCOMPARE(world.bodies[0].material.friction, 0.9);
+    QVERIFY(m_window->runner().isRunning());
+
+    // The ball rises on; pause, then undo the friction change from the canvas.
+    const double editedAt = world.time;
+    QTRY_VERIFY(world.time > editedAt + 0.05);
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(!m_window->runner().isRunning());
+    const model::BodyState now = world.bodies[0].state;
+    QVERIFY(now.position.y() > editedAt + 0.04); // 1 m/s upward since t = 0
+    QCOMPARE(shownText(m_window->undoAction()), QStringLiteral("Undo Change friction"));
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(world.bodies[0].material.friction, 0.5);
+    QCOMPARE(world.bodies[0].state, now);
+    QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(now.position.x(), now.position.y()));
+
+    // Redo puts the friction back, and leaves the ball where it is too.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(world.bodies[0].material.friction, 0.9);
+    QCOMPARE(world.bodies[0].state, now);
+}
+
+void EditorTest::pinHingeFieldShowsAndEditsTheHingeWhereItIsNow()
+{
+    // Two planks hinged end to end at the origin, no gravity.
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("left", model::Box{1, 0.4}, Vec2(-0.5, 0)));
+    world.bodies.push_back(test::makeBody("right", model::Box{1, 0.4}, Vec2(0.5, 0)));
+    world.joints.push_back(test::pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+
+    // Drag the left plank away: the hinge, a point of that plank, goes with it.
+    drag(canvas.viewport(), pixelOf(canvas, QPointF(-0.5, 0)), pixelOf(canvas, QPointF(-1.5, 0.8)));
+    const model::World& now = m_window->runner().world();
+    const Vec2 hinge = now.bodies[0].worldPoint(now.joints[0].anchorA);
+    QVERIFY((hinge - Vec2(-1, 0.8)).norm() < 0.05);
+
+    // The pane shows the hinge where it is now, not where the pin was made.
+    m_window->document().setSelection(Selection{{}, {}, {0}});
+    auto* hingeX = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("pinAnchorX"));
+    auto* hingeY = m_window->propertyPane()->findChild<QLineEdit*>(QStringLiteral("pinAnchorY"));
+    QVERIFY(hingeX && hingeY && hingeX->isVisible());
+    QVERIFY2(qAbs(hingeX->text().toDouble() - hinge.x()) < 1e-5, qPrintable(hingeX->text()));
+    QVERIFY2(qAbs(hingeY->text().toDouble() - hinge.y()) < 1e-5, qPrintable(hingeY->text()));
+
+    // Move the hinge 0.1 m up along the joint line by typing its y: x stays where it is now, and
+    // both planks get their anchor on the new point, so nothing pulls them anywhere.
+    const Vec2 moved(hinge.x(), hinge.y() + 0.1);
+    hingeY->setFocus();
+    hingeY->selectAll();
+    QTest::keyClicks(hingeY, QString::number(moved.y(), 'g', 17));
+    QTest::keyClick(hingeY, Qt::Key_Return);
+    const model::Joint& edited = now.joints[0];
+    const Vec2 onLeft = now.bodies[0].worldPoint(edited.anchorA);
+    const Vec2 onRight = now.bodies[1].worldPoint(edited.anchorB);
+    QVERIFY2((onLeft - moved).norm() < 1e-9, qPrintable(QStringLiteral("%1, %2").arg(onLeft.x()).arg(onLeft.y())));
+    QVERIFY2((onRight - moved).norm() < 1e-9, qPrintable(QStringLiteral("%1, %2").arg(onRight.x()).arg(onRight.y())));
+    const Vec2 leftBefore = now.bodies[0].state.position;
+    const Vec2 rightBefore = now.bodies[1].state.position;
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QCOMPARE(now.stepCount, std::int64_t(1));
+    QVERIFY((now.bodies[0].state.position - leftBefore).norm() < 1e-9);
+    QVERIFY((now.bodies[1].state.position - rightBefore).norm() < 1e-9);
+}
+
+void EditorTest::spaceOnTheFixedCheckBoxTogglesItAndDoesNotPlay()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("crate", model::Box{1, 1}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{0}, {}, {}}));
+
+    // A keyboard user tabs to "Fixed" and presses Space: the box is fixed, nothing plays.
+    auto* fixed = m_window->propertyPane()->findChild<QCheckBox*>(QStringLiteral("fixed"));
+    QVERIFY(fixed && fixed->isVisible() && !fixed->isChecked());
+    fixed->setFocus(Qt::TabFocusReason);
+    QVERIFY(fixed->hasFocus());
+    QTest::keyClick(fixed, Qt::Key_Space);
+    QVERIFY(fixed->isChecked());
+    QVERIFY(m_window->runner().world().bodies[0].fixed);
+    QVERIFY(!m_window->runner().isRunning());
+    // The menus still show the shortcut, and on the canvas Space still plays.
+    QCOMPARE(m_window->playAction()->shortcut(), QKeySequence(Qt::Key_Space));
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(m_window->runner().isRunning());
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QVERIFY(!m_window->runner().isRunning());
+}
+
+void EditorTest::deleteAndArrowsInTheVertexTableStayInTheTable()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(
+        test::makeBody("wedge", model::Polygon{{Vec2(0, 0), Vec2(2, 0), Vec2(2, 1)}}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    m_window->document().setSelection(Selection{{0}, {}, {}});
+    auto* table = m_window->propertyPane()->findChild<QTableWidget*>(QStringLiteral("vertices"));
+    QVERIFY(table && table->isVisible());
+    table->setFocus(Qt::TabFocusReason);
+    table->setCurrentCell(1, 0);
+
+    // Delete in the table is the table's: the body stays. → moves to the next cell, not a step.
+    QTest::keyClick(table, Qt::Key_Delete);
+    QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(1));
+    QTest::keyClick(table, Qt::Key_Right);
+    QCOMPARE(table->currentColumn(), 1);
+    QCOMPARE(m_window->runner().world().stepCount, std::int64_t(0));
+    // Tool letters and R do not act from the table either.
+    QTest::keyClick(table, Qt::Key_B);
+    QCOMPARE(canvas.toolKind(), ToolKind::Select);
+
+    // On the canvas, Delete deletes.
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QVERIFY(m_window->runner().world().bodies.empty());
+}
+
+void EditorTest::deletingOrMovingAPartnerEndsTheRed()
+{
+    // Two blue discs touching at the origin, at rest, no gravity; far away a disc touching a floor.
+    model::World world = emptyWorld();
+    for (const double x : {-0.3, 0.3}) {
+        model::Body disc = test::makeBody(x < 0 ? "left" : "right", model::Circle{0.3}, Vec2(x, 0));
+        disc.color = model::Color{0x1d, 0x4e, 0xd8};
+        world.bodies.push_back(disc);
+    }
+    world.bodies.push_back(test::makeBody("floor", model::Box{2, 0.5}, Vec2(5, -0.55), true));
+    world.bodies.push_back(test::makeBody("rester", model::Circle{0.3}, Vec2(5, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    const QColor blue(0x1d, 0x4e, 0xd8);
+    const QColor red(0xdc, 0x26, 0x26);
+    const auto colourAt = [&](const QPointF& scene) {
+        return canvas.viewport()->grab().toImage().pixelColor(pixelOf(canvas, scene));
+    };
+    const model::World& now = m_window->runner().world();
+
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QVERIFY(now.bodies[0].colliding && now.bodies[1].colliding);
+    QVERIFY(now.bodies[2].colliding && now.bodies[3].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), red), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+
+    // Delete the right disc: the left one touches nothing any more and is blue again.
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(0.4, 0)));
+    QCOMPARE(m_window->document().selection(), (Selection{{1}, {}, {}}));
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QCOMPARE(now.bodies.size(), std::size_t(3));
+    QVERIFY(!now.bodies[0].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), blue), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+    // The disc resting on the floor far away still touches it, and stays red.
+    QVERIFY(now.bodies[1].colliding && now.bodies[2].colliding);
+    QVERIFY2(near(colourAt(QPointF(5, 0.15)), red), qPrintable(colourAt(QPointF(5, 0.15)).name()));
+    QCOMPARE(now.contacts.size(), std::size_t(1));
+    QCOMPARE(now.contacts[0].bodyA.index, 1u);
+    QCOMPARE(now.contacts[0].bodyB.index, 2u);
+
+    // Undo brings it back; a step makes both red; dragging the right one away ends the contact
+    // for both at once, before any step.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(now.bodies.size(), std::size_t(4));
+    QVERIFY(now.bodies[3].colliding);
+    QTest::keyClick(&canvas, Qt::Key_Escape);
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QVERIFY(now.bodies[0].colliding && now.bodies[1].colliding);
+    drag(canvas.viewport(), pixelOf(canvas, QPointF(0.4, 0)), pixelOf(canvas, QPointF(1.6, 0)));
+    QVERIFY(now.bodies[1].state.position.x() > 1.2);
+    QVERIFY(!now.bodies[0].colliding && !now.bodies[1].colliding);
+    QVERIFY(now.bodies[2].colliding && now.bodies[3].colliding);
+    QVERIFY2(near(colourAt(QPointF(-0.3, 0.15)), blue), qPrintable(colourAt(QPointF(-0.3, 0.15)).name()));
+    const Vec2 right = now.bodies[1].state.position;
+    QVERIFY2(near(colourAt(QPointF(right.x(), right.y() + 0.15)), blue),
+             qPrintable(colourAt(QPointF(right.x(), right.y() + 0.15)).name()));
+}
+
+void EditorTest::everyExampleHasATranslatableTitle()
+{
+    // Every scene in resources/examples gets its title from the table, through tr(): none is made
+    // from its file name, which a translator could not reach.
+    MarkingTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    const std::vector<impetus::view::ExampleScene> examples = impetus::view::exampleScenes();
+    QCoreApplication::removeTranslator(&translator);
+    QVERIFY(examples.size() >= 10);
+    QStringList titles;
+    for (const impetus::view::ExampleScene& example : examples) {
+        QVERIFY2(example.title.startsWith(QStringLiteral("«")) && example.title.endsWith(QStringLiteral("»")),
+                 qPrintable(example.path + QStringLiteral(": ") + example.title));
+        titles << example.title;
+    }
+    // One title each, and the issue's examples by the names a student looks for.
+    titles.removeDuplicates();
+    QCOMPARE(titles.size(), static_cast<qsizetype>(examples.size()));
+    for (const char* title : {"«Newton's cradle»", "«Pendulum»", "«Billiards break»", "«Spaceship and asteroids»"})
+        QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char(','))));
+}
+
+void EditorTest::escapeCancelsADragInProgress()
+{
+    model::World world = emptyWorld();
+    world.bodies.push_back(test::makeBody("crate", model::Box{0.6, 0.6}, Vec2(0, 0)));
+    open(world);
+    CanvasView& canvas = m_window->canvas();
+    const model::World before = m_window->runner().world();
+    const int commands = m_window->document().undoStack()->count();
+    const QPoint onCrate = pixelOf(canvas, QPointF(0, 0));
+    const QPoint away = pixelOf(canvas, QPointF(2, 1));
+
+    // Press, drag, Escape, release: nothing is drawn, with every drag tool.
+    for (const Qt::Key key : {Qt::Key_B, Qt::Key_C, Qt::Key_E, Qt::Key_K, Qt::Key_L}) {
+        QTest::keyClick(&canvas, key);
+        QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, onCrate);
+        QTest::mouseMove(canvas.viewport(), (onCrate + away) / 2);
+        QTest::mouseMove(canvas.viewport(), away);
+        QTest::keyClick(&canvas, Qt::Key_Escape);
+        QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, away);
+        QVERIFY2(m_window->runner().world() == before, qPrintable(QKeySequence(key).toString()));
+        QCOMPARE(m_window->document().undoStack()->count(), commands);
+    }
+
+    // A move with the select tool, and a turn with the rotate tool: the crate goes back where it
+    // was, and there is nothing to undo.
+    for (const Qt::Key key : {Qt::Key_S, Qt::Key_T}) {
+        QTest::keyClick(&canvas, key);
+        QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, onCrate + QPoint(5, 5));
+        QTest::mouseMove(canvas.viewport(), onCrate + QPoint(40, 60));
+        QTest::mouseMove(canvas.viewport(), away);
+        QVERIFY(m_window->runner().world().bodies[0].state != before.bodies[0].state);
+        QTest::keyClick(&canvas, Qt::Key_Escape);
+        QCOMPARE(m_window->runner().world().bodies[0].state, before.bodies[0].state);
+        QTest::mouseMove(canvas.viewport(), away + QPoint(10, 0));
+        QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, away + QPoint(10, 0));
+        QCOMPARE(m_window->runner().world().bodies[0].state, before.bodies[0].state);
+        QCOMPARE(m_window->document().undoStack()->count(), commands);
+        QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(0, 0));
+    }
+
+    // The tools work as before afterwards.
+    QTest::keyClick(&canvas, Qt::Key_B);
+    drag(canvas.viewport(), away, away + QPoint(40, 40));
+    QCOMPARE(m_window->runner().world().bodies.size(), std::size_t(2));
+}
+
+void EditorTest::saveWhileRunningPausesAndSavesTheInstantShown()
+{
+    open(test::risingBallWorld());
+    CanvasView& canvas = m_window->canvas();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("rising.json"));
+    QVERIFY(m_window->saveTo(path));
+
+    QTest::keyClick(&canvas, Qt::Key_Space);
+    QTRY_VERIFY(m_window->runner().world().time > 0.05);
+    QTest::keyClick(&canvas, Qt::Key_S, Qt::ControlModifier);
+    // Saving stopped the run, so the file holds the instant on the canvas, and it stays there.
+    QVERIFY(!m_window->runner().isRunning());
+    QVERIFY(!m_window->playAction()->isChecked());
+    const model::SceneLoadResult saved = impetus::view::loadScene(path);
+    QVERIFY(saved.ok());
+    const Vec2 inFile = saved.world->bodies[0].state.position;
+    QVERIFY(inFile.y() > 0.04);
+    QCOMPARE(m_window->runner().world().bodies[0].state.position, inFile);
+    QCOMPARE(canvas.bodyItems()[0]->scenePos(), QPointF(inFile.x(), inFile.y()));
+    QTest::qWait(50);
+    QCOMPARE(m_window->runner().world().bodies[0].state.position, inFile);
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void EditorTest::boxPreviewIsTintedWithItsAlpha()
+{
+    // The box being dragged out is the preview colour at kPreviewFillAlpha over the canvas.
+    CanvasView& canvas = m_window->canvas();
+    QTest::keyClick(&canvas, Qt::Key_B);
+    const QPoint from(250, 420), to(430, 300), inside(340, 360);
+    const QColor paper = canvas.viewport()->grab().toImage().pixelColor(inside);
+    QTest::mousePress(canvas.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(canvas.viewport(), to);
+    const QColor tinted = canvas.viewport()->grab().toImage().pixelColor(inside);
+    const double alpha = impetus::view::constants::kPreviewFillAlpha;
+    const QColor preview = impetus::view::constants::kPreviewColor;
+    const auto blend = [&](int under, int over) { return static_cast<int>(std::lround(under * (1 - alpha) + over * alpha)); };
+    const QColor expected(blend(paper.red(), preview.red()), blend(paper.green(), preview.green()),
+                          blend(paper.blue(), preview.blue()));
+    QVERIFY2(near(tinted, expected, 3), qPrintable(tinted.name() + QStringLiteral(" vs ") + expected.name()));
+    QTest::mouseRelease(canvas.viewport(), Qt::LeftButton, {}, to);
 }
 
 QTEST_MAIN(EditorTest)

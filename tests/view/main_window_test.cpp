@@ -1,5 +1,6 @@
 // MainWindow, driven as a user would: keys, the default scene, opening a bad file.
 
+#include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"
@@ -7,17 +8,21 @@
 #include "view/main_window.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+
+#include <cmath>
 
 using impetus::view::MainWindow;
 namespace model = impetus::model;
@@ -47,6 +52,9 @@ private slots:
     void badSceneFileLeavesCurrentSceneUntouched();
     void badSceneFileShowsProblemsInMessageBox();
     void widgetsHaveAccessibleNames();
+    void runThatBlowsUpStopsWithAMessage();
+    void badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems();
+    void savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout();
 
 private:
     /// Shows `window` and waits until it is active, so that its shortcuts work.
@@ -223,6 +231,95 @@ void MainWindowTest::widgetsHaveAccessibleNames()
     QVERIFY(toolBars.at(0)->widgetForAction(window.playAction()) != nullptr);
     for (const QLabel* label : window.statusBar()->findChildren<QLabel*>())
         QVERIFY(!label->accessibleName().isEmpty());
+}
+
+void MainWindowTest::runThatBlowsUpStopsWithAMessage()
+{
+    MainWindow window;
+    window.setScene(test::explodingSpringWorld(), QStringLiteral("stiff spring"));
+    QVERIFY(showActive(window));
+    const model::World start = window.runner().world();
+
+    // Play with Space on the canvas: the run soon gives not-a-number and stops by itself.
+    QTest::keyClick(&window.canvas(), Qt::Key_Space);
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("divergedBox")) != nullptr);
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("divergedBox"));
+    QVERIFY(!window.runner().isRunning());
+    QVERIFY(!window.playAction()->isChecked());
+    const QString text = box->text() + QLatin1Char('\n') + box->informativeText();
+    QVERIFY2(text.contains(QStringLiteral("“bob”")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("t = ")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Reset")) && text.contains(QStringLiteral("Undo")), qPrintable(text));
+    // The window shows the last finite state: no "nan" in the readouts.
+    QVERIFY2(!statusText(window).contains(QStringLiteral("nan"), Qt::CaseInsensitive), qPrintable(statusText(window)));
+    QVERIFY(std::isfinite(window.runner().world().bodies[0].state.position.x()));
+    box->button(QMessageBox::Ok)->click();
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("divergedBox")) == nullptr);
+
+    // Nothing is lost: Reset goes back to the world at Play. (The offscreen platform gives the
+    // activation back to no window when the box closes; a desktop gives it to the main window.)
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.canvas().setFocus();
+    QTest::keyClick(&window.canvas(), Qt::Key_R);
+    QVERIFY(window.runner().world() == start);
+}
+
+void MainWindowTest::badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems()
+{
+    // `impetus bad.json`: the window shows, on the default scene, with every problem listed in the
+    // box File > Open uses.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    QVERIFY(test::writeFile(path, test::kSceneWithTwoProblems));
+
+    MainWindow window;
+    QVERIFY(showActive(window));
+    const QStringList problems = window.openStartupScene(path);
+    QCOMPARE(problems.size(), 2);
+    const model::SceneLoadResult expected = impetus::view::loadScene(QString::fromLatin1(impetus::view::kDefaultScenePath));
+    QVERIFY(expected.ok());
+    QVERIFY(window.runner().world() == *expected.world);
+    QVERIFY(window.isVisible());
+
+    auto* box = window.findChild<QMessageBox*>(QStringLiteral("openErrorBox"));
+    QVERIFY(box);
+    QTRY_VERIFY(box->isVisible());
+    const QString text = box->text() + QLatin1Char('\n') + box->informativeText();
+    QVERIFY2(text.contains(QStringLiteral("bad.json")) && text.contains(QStringLiteral("default scene")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bodies[0].shape.width")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bodies[1].name")), qPrintable(text));
+    box->button(QMessageBox::Ok)->click();
+    QTRY_VERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);
+
+    // A good file opens with no box.
+    const QString good = dir.filePath(QStringLiteral("good.json"));
+    QVERIFY(test::writeFile(good, R"({ "format": "impetus-scene", "version": 1, "bodies": [
+        { "name": "only", "shape": { "type": "circle", "radius": 1 }, "position": [0, 0] } ] })"));
+    QVERIFY(window.openStartupScene(good).isEmpty());
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t(1));
+    QVERIFY(window.findChild<QMessageBox*>(QStringLiteral("openErrorBox")) == nullptr);
+}
+
+void MainWindowTest::savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout()
+{
+    QSettings().clear(); // this test's own settings folder: no window has been saved yet
+    {
+        MainWindow first;
+        QCOMPARE(first.size(), QSize(impetus::view::constants::kDefaultWindowWidth,
+                                     impetus::view::constants::kDefaultWindowHeight));
+        first.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&first));
+        first.resize(700, 500);
+        QVERIFY(first.close());
+    }
+    MainWindow second;
+    QCOMPARE(second.size(), QSize(700, 500));
+    second.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&second));
+    QCOMPARE(second.size(), QSize(700, 500));
 }
 
 QTEST_MAIN(MainWindowTest)

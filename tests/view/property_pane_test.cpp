@@ -412,6 +412,14 @@ void PropertyPaneTest::worldSettingsAreEditable()
     typeAndEnter(pane.findChild<QLineEdit*>("drag"), "-0.1");
     QCOMPARE(pane.message(), QString("Drag must be 0 or greater (got -0.1)."));
     QCOMPARE(spy.count(), 1);
+    // A step the window could not keep up with, or one too coarse to mean anything, is refused
+    // with the range.
+    typeAndEnter(pane.findChild<QLineEdit*>("timeStep"), "1e-9");
+    QCOMPARE(pane.message(), QString("Time step must be from 1e-05 s to 0.1 s (got 1e-09 s)."));
+    QCOMPARE(pane.findChild<QLineEdit*>("timeStep")->text(), QString("0.00416667"));
+    typeAndEnter(pane.findChild<QLineEdit*>("timeStep"), "0.5");
+    QCOMPARE(pane.message(), QString("Time step must be from 1e-05 s to 0.1 s (got 0.5 s)."));
+    QCOMPARE(spy.count(), 1);
     typeAndEnter(pane.findChild<QLineEdit*>("timeStep"), "0.01");
     QCOMPARE(spy.count(), 2);
     QCOMPARE(spy.at(1).at(0).value<model::WorldSettings>().timeStep, 0.01);

@@ -349,13 +349,7 @@ void SceneDocumentTest::movedPinnedBodySavesItsHinge()
     model::World world;
     world.bodies.push_back(test::makeBody("a", model::Box{1, 1}, Vec2(0, 0)));
     world.bodies.push_back(test::makeBody("b", model::Box{1, 1}, Vec2(2, 0)));
-    model::Joint pin;
-    pin.type = model::JointType::Pin;
-    pin.bodyA = model::BodyId{0};
-    pin.bodyB = model::BodyId{1};
-    pin.worldAnchor = Vec2(1, 0.5);
-    pin.anchorA = Vec2(1, 0.5);
-    pin.anchorB = Vec2(-1, 0.5);
+    const model::Joint pin = test::pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2(1, 0.5));
     world.joints.push_back(pin);
     SceneDocument document;
     document.setScene(world, QString(), QStringLiteral("pinned"));

@@ -4,6 +4,8 @@
 #include "test_worlds.h"
 #include "view/simulation_runner.h"
 
+#include "controller/diagnostics.h"
+
 #include <QSignalSpy>
 #include <QTest>
 
@@ -24,6 +26,9 @@ private slots:
     void playRunsInRealTimeAndPauseStops();
     void resetGoesBackToLastPlay();
     void editWorldKeepsRunningAndTheWorldAtPlay();
+    void divergingBatchIsTakenBackPausedAndReported();
+    void divergingStepsAreReportedToo();
+    void tinyTimeStepCannotFreezeATick();
 };
 
 void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
@@ -177,6 +182,83 @@ void SimulationRunnerTest::editWorldKeepsRunningAndTheWorldAtPlay()
 
     runner.setWorld(test::risingBallWorld());
     QCOMPARE(replaced.count(), 1);
+}
+
+
+void SimulationRunnerTest::divergingBatchIsTakenBackPausedAndReported()
+{
+    SimulationRunner runner;
+    runner.setWorld(test::explodingSpringWorld());
+    runner.play();
+    const model::World atPlay = runner.world();
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+    QSignalSpy diverged(&runner, &SimulationRunner::diverged);
+
+    // Wall time comes in frames, as from the timer, until a frame's batch blows up.
+    model::World lastFinite = runner.world();
+    for (int frame = 0; frame < 100 && diverged.isEmpty(); ++frame) {
+        lastFinite = runner.world();
+        runner.advanceWallTime(1.0 / 60);
+    }
+    QCOMPARE(diverged.count(), 1);
+    QCOMPARE(diverged.at(0).at(0).toString(), QStringLiteral("bob"));
+    // The time reported is when the batch ended, later than the world that is kept.
+    const double time = diverged.at(0).at(1).toDouble();
+    QVERIFY2(time > lastFinite.time, qPrintable(QString::number(time)));
+    // Stopped, on the last finite world (the one the view showed), with the world at Play kept.
+    QVERIFY(!runner.isRunning());
+    QVERIFY(runner.world() == lastFinite);
+    QVERIFY(!impetus::controller::firstNonFiniteBody(runner.world()));
+    QVERIFY(runner.worldAtLastPlay() && *runner.worldAtLastPlay() == atPlay);
+    // The blown-up batch did not tell the view to draw it.
+    const qsizetype steppedBefore = stepped.count();
+    QCOMPARE(runner.advanceWallTime(0), std::int64_t(0));
+    QCOMPARE(stepped.count(), steppedBefore);
+    runner.resetToLastPlay();
+    QVERIFY(runner.world() == atPlay);
+}
+
+void SimulationRunnerTest::divergingStepsAreReportedToo()
+{
+    // stepBy (the screenshot mode) and stepOnce (the Step button) check as well.
+    SimulationRunner runner;
+    runner.setWorld(test::explodingSpringWorld());
+    QSignalSpy diverged(&runner, &SimulationRunner::diverged);
+    const model::World start = runner.world();
+    runner.stepBy(1000);
+    QCOMPARE(diverged.count(), 1);
+    QVERIFY(runner.world() == start);
+    while (diverged.count() == 1 && runner.world().stepCount < 1000)
+        runner.stepOnce();
+    QCOMPARE(diverged.count(), 2);
+    QCOMPARE(diverged.at(1).at(0).toString(), QStringLiteral("bob"));
+    QVERIFY(!impetus::controller::firstNonFiniteBody(runner.world()));
+}
+
+void SimulationRunnerTest::tinyTimeStepCannotFreezeATick()
+{
+    SimulationRunner runner;
+    model::World world = test::risingBallWorld();
+    // A step no machine can take 10¹⁷ of in a frame: the per-frame count is huge, and defined.
+    world.settings.timeStep = 1e-18;
+    runner.setWorld(world);
+    QVERIFY2(runner.maxStepsPerFrame() >= std::int64_t(1e15), qPrintable(QString::number(runner.maxStepsPerFrame())));
+    // However small the step, the count stays a positive number (1e-300 s would overflow int64).
+    world.settings.timeStep = 1e-300;
+    runner.setWorld(world);
+    QVERIFY2(runner.maxStepsPerFrame() >= std::int64_t(1e15), qPrintable(QString::number(runner.maxStepsPerFrame())));
+
+    // One frame of wall time at dt = 1e-9 s owes 1.7·10⁷ steps, many seconds of work: the tick
+    // stops after its wall-clock budget, with far fewer, and drops the rest of the backlog.
+    world.settings.timeStep = 1e-9;
+    runner.setWorld(world);
+    const std::int64_t steps = runner.advanceWallTime(1.0 / 60);
+    QVERIFY(steps > 0);
+    QVERIFY2(steps < std::int64_t(1e7), qPrintable(QString::number(steps)));
+    QCOMPARE(runner.world().stepCount, steps);
+    QCOMPARE(runner.advanceWallTime(0), std::int64_t(0));
+    // The step itself never changed: the ball rose exactly steps × dt at 1 m/s.
+    QVERIFY(qAbs(runner.world().bodies[0].state.position.y() - static_cast<double>(steps) * 1e-9) < 1e-12);
 }
 
 QTEST_MAIN(SimulationRunnerTest)

@@ -21,6 +21,22 @@ inline model::Body makeBody(std::string name, model::Shape shape, Vec2 position,
     return body;
 }
 
+/// A pin hinging body `a` of `world` to body `b` at the world point `hinge`, its anchors in each
+/// body's frame taken from their current poses, as the scene loader derives them.
+inline model::Joint pinAt(const model::World& world, model::BodyId a, model::BodyId b, Vec2 hinge)
+{
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = a;
+    pin.bodyB = b;
+    pin.worldAnchor = hinge;
+    const model::BodyState& stateA = world.body(a).state;
+    const model::BodyState& stateB = world.body(b).state;
+    pin.anchorA = rotate(Vec2(hinge - stateA.position), -stateA.angle);
+    pin.anchorB = rotate(Vec2(hinge - stateB.position), -stateB.angle);
+    return pin;
+}
+
 /// No gravity; a red ball at the origin moving straight up at 1 m/s, and a fixed grey box 2 m
 /// above it that widens the framed region so the ball stays in view as it rises.
 inline model::World risingBallWorld()
@@ -49,6 +65,22 @@ inline model::World hangingBoxWorld()
     spring.anchorB = Vec2(0, 2);
     spring.stiffness = 50;
     spring.restLength = 0.6;
+    world.springs.push_back(spring);
+    return world;
+}
+
+/// No gravity; a ball called "bob" 1 m from the world origin, held there by a spring far too stiff
+/// (k = 10¹⁴ N/m) for the default time step: within a few dozen steps its state is not finite.
+inline model::World explodingSpringWorld()
+{
+    model::World world;
+    world.settings.gravity = Vec2::Zero();
+    world.bodies.push_back(makeBody("bob", model::Circle{0.1}, Vec2(1, 0)));
+    model::Spring spring;
+    spring.bodyA = model::BodyId{0};
+    spring.anchorB = Vec2(0, 0);
+    spring.stiffness = 1e14;
+    spring.restLength = 0;
     world.springs.push_back(spring);
     return world;
 }

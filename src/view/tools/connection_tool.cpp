@@ -5,6 +5,7 @@
 #include "view/tools/drag_shape_tools.h"
 #include "view/view_constants.h"
 
+#include <QKeyEvent>
 #include <QLineF>
 #include <QPainter>
 
@@ -61,6 +62,19 @@ void ConnectionDragTool::mouseRelease(const ToolEvent& event)
         return;
     }
     connectEnds(start, m_from, attachmentAt(point, start.body), point);
+}
+
+bool ConnectionDragTool::wantsKey(int key, Qt::KeyboardModifiers) const
+{
+    return m_start.has_value() && key == Qt::Key_Escape;
+}
+
+bool ConnectionDragTool::keyPress(QKeyEvent* event)
+{
+    if (!wantsKey(event->key(), event->modifiers()))
+        return false;
+    m_start.reset();
+    return true;
 }
 
 void ConnectionDragTool::paintOverlay(QPainter& painter, double) const

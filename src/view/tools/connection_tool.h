@@ -20,7 +20,7 @@ Vec2 bodyFramePoint(const model::Body& body, const Vec2& world);
 
 /// A tool that joins a body to another body, or to a world point, by a drag: press on the first
 /// body, release on the second (the topmost body there other than the first) or on empty space.
-/// Points snap to the grid when snapping is on.
+/// Points snap to the grid when snapping is on. Escape during the drag gives it up.
 class ConnectionDragTool : public Tool {
 public:
     using Tool::Tool;
@@ -28,6 +28,8 @@ public:
     void mousePress(const ToolEvent& event) override;
     void mouseMove(const ToolEvent& event) override;
     void mouseRelease(const ToolEvent& event) override;
+    bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
+    bool keyPress(QKeyEvent* event) override;
     void paintOverlay(QPainter& painter, double pixelsPerMetre) const override;
 
 protected:

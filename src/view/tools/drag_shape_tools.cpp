@@ -4,6 +4,7 @@
 #include "view/scene_document.h"
 #include "view/view_constants.h"
 
+#include <QKeyEvent>
 #include <QLineF>
 #include <QPainter>
 
@@ -44,6 +45,17 @@ void DragShapeTool::mouseRelease(const ToolEvent& event)
     m_document.addBody(std::move(body), actionName());
 }
 
+bool DragShapeTool::wantsKey(int key, Qt::KeyboardModifiers) const { return m_dragging && key == Qt::Key_Escape; }
+
+bool DragShapeTool::keyPress(QKeyEvent* event)
+{
+    if (!wantsKey(event->key(), event->modifiers()))
+        return false;
+    // The release that follows finds no drag and draws nothing.
+    m_dragging = false;
+    return true;
+}
+
 void DragShapeTool::paintOverlay(QPainter& painter, double) const
 {
     if (!m_dragging)
@@ -58,7 +70,8 @@ void paintPreview(QPainter& painter, const QPainterPath& path)
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(constants::kPreviewFillAlpha);
+    // QColor keeps its alpha as a float; the constant is a double like every other.
+    fill.setAlphaF(static_cast<float>(constants::kPreviewFillAlpha));
     painter.setBrush(fill);
     painter.drawPath(path);
 }

@@ -14,6 +14,7 @@ namespace impetus::view {
 /// A tool that draws one body per drag from the press point to the release point (both snapped
 /// to the grid when snapping is on). A drag shorter than constants::kMinimumDragPx draws nothing.
 /// The new body gets a unique name, the default material and density 1 kg/m², and is selected.
+/// Escape during the drag gives it up: nothing is drawn.
 class DragShapeTool : public Tool {
 public:
     using Tool::Tool;
@@ -21,6 +22,8 @@ public:
     void mousePress(const ToolEvent& event) override;
     void mouseMove(const ToolEvent& event) override;
     void mouseRelease(const ToolEvent& event) override;
+    bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
+    bool keyPress(QKeyEvent* event) override;
     void paintOverlay(QPainter& painter, double pixelsPerMetre) const override;
 
 protected:

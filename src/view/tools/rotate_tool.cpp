@@ -3,6 +3,7 @@
 #include "view/canvas_view.h"
 #include "view/view_constants.h"
 
+#include <QKeyEvent>
 #include <QPainter>
 
 #include <cmath>
@@ -61,6 +62,14 @@ void RotationGesture::update(SceneDocument& document, const QPointF& scenePos, b
     document.setPoses(m_bodies, poses, tr("Rotate"), m_gesture);
 }
 
+void RotationGesture::cancel(SceneDocument& document)
+{
+    if (!m_active)
+        return;
+    document.setPoses(m_bodies, m_startPoses, tr("Rotate"), m_gesture);
+    end();
+}
+
 void paintRotation(QPainter& painter, double pixelsPerMetre, const QPointF& pivot, const QPointF& cursor)
 {
     QPen pen(constants::kSelectionColor, constants::kOutlineWidthPx, Qt::DashLine);
@@ -101,6 +110,19 @@ void RotateTool::mouseRelease(const ToolEvent& event)
     // The release decides the final angle, with the modifiers held at that moment.
     m_rotation.update(m_document, event.scenePos, event.modifiers.testFlag(Qt::ShiftModifier));
     m_rotation.end();
+}
+
+bool RotateTool::wantsKey(int key, Qt::KeyboardModifiers) const
+{
+    return m_rotation.isActive() && key == Qt::Key_Escape;
+}
+
+bool RotateTool::keyPress(QKeyEvent* event)
+{
+    if (!wantsKey(event->key(), event->modifiers()))
+        return false;
+    m_rotation.cancel(m_document);
+    return true;
 }
 
 void RotateTool::paintOverlay(QPainter& painter, double pixelsPerMetre) const

@@ -25,6 +25,9 @@ public:
     void update(SceneDocument& document, const QPointF& scenePos, bool snap);
     /// Ends the drag.
     void end() { m_active = false; }
+    /// Gives the drag up: puts the bodies back as they were at begin() (the gesture's command
+    /// then changes nothing and leaves the undo stack) and ends it.
+    void cancel(SceneDocument& document);
     /// True between begin() and end().
     bool isActive() const { return m_active; }
     /// The pivot, m.
@@ -46,7 +49,7 @@ void paintRotation(QPainter& painter, double pixelsPerMetre, const QPointF& pivo
 
 /// The Rotate tool: press on a body (it becomes the selection unless it is selected already) or
 /// anywhere with bodies selected, and drag around their centre to turn them. Shift snaps the angle
-/// to constants::kRotationSnapDegrees.
+/// to constants::kRotationSnapDegrees. Escape during the drag turns them back.
 class RotateTool : public Tool {
 public:
     using Tool::Tool;
@@ -55,6 +58,8 @@ public:
     void mousePress(const ToolEvent& event) override;
     void mouseMove(const ToolEvent& event) override;
     void mouseRelease(const ToolEvent& event) override;
+    bool wantsKey(int key, Qt::KeyboardModifiers modifiers) const override;
+    bool keyPress(QKeyEvent* event) override;
     void paintOverlay(QPainter& painter, double pixelsPerMetre) const override;
     Qt::CursorShape cursorShape() const override { return Qt::PointingHandCursor; }
 

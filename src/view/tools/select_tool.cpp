@@ -161,7 +161,7 @@ bool SelectTool::wantsKey(int key, Qt::KeyboardModifiers modifiers) const
         return false;
     if (isArrow(key))
         return !m_document.selection().bodies.empty();
-    return key == Qt::Key_Escape && !m_document.selection().empty();
+    return key == Qt::Key_Escape && (m_mode != Mode::Idle || !m_document.selection().empty());
 }
 
 bool SelectTool::keyPress(QKeyEvent* event)
@@ -169,7 +169,23 @@ bool SelectTool::keyPress(QKeyEvent* event)
     if (!wantsKey(event->key(), event->modifiers()))
         return false;
     if (event->key() == Qt::Key_Escape) {
-        m_document.setSelection({});
+        switch (m_mode) {
+        case Mode::Moving:
+            // Back to the start poses within the same gesture: the drag's command then changes
+            // nothing and leaves the undo stack.
+            m_document.setPoses(m_moving, m_startPoses, tr("Move"), m_gesture);
+            break;
+        case Mode::Rotating:
+            m_rotation.cancel(m_document);
+            break;
+        case Mode::RubberBand:
+            m_document.setSelection(m_selectionBefore);
+            break;
+        case Mode::Idle:
+            m_document.setSelection({});
+            break;
+        }
+        m_mode = Mode::Idle;
         return true;
     }
     double step = constants::kNudgeGridFraction * m_canvas.gridSpacing();
@@ -212,7 +228,8 @@ void SelectTool::paintOverlay(QPainter& painter, double pixelsPerMetre) const
     pen.setCosmetic(true);
     painter.setPen(pen);
     QColor fill = constants::kPreviewColor;
-    fill.setAlphaF(constants::kRubberBandFillAlpha);
+    // QColor keeps its alpha as a float; the constant is a double like every other.
+    fill.setAlphaF(static_cast<float>(constants::kRubberBandFillAlpha));
     painter.setBrush(fill);
     painter.drawRect(QRectF(m_pressPos, m_cursor).normalized());
 }

@@ -13,8 +13,9 @@ namespace impetus::view {
 /// Click a body, spring or joint to select it (Shift adds or removes it); drag on empty space for
 /// a rubber band that selects what lies wholly inside; drag a body to move the selected bodies
 /// (snapped to the grid when snapping is on); Ctrl+drag turns them about their centre. The arrow
-/// keys nudge the selected bodies by a tenth of a grid spacing (Shift: a whole spacing), Escape
-/// clears the selection.
+/// keys nudge the selected bodies by a tenth of a grid spacing (Shift: a whole spacing). Escape
+/// during a drag gives it up (moved or turned bodies go back, a rubber band leaves the selection
+/// as it was); otherwise it clears the selection.
 class SelectTool : public Tool {
 public:
     using Tool::Tool;
