@@ -1,7 +1,5 @@
 #include "controller/force_model.h"
 
-#include "controller/task_pair.h"
-
 #include "controller/soft_body_builder.h"
 #include "model/constants.h"
 
@@ -85,94 +83,71 @@ void addGridSpringForces(const model::SoftGrid& grid, const model::BodyState* s,
     }
 }
 
-/// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of soft
-/// grid `g`, whose ellipses' states start at `offset`: writes every field of their entries in
-/// `out`, with the accelerations (every ellipse of a grid has the same mass, so forces are divided
-/// by it up front).
-void addOneSoftGridForces(const model::World& world, std::size_t g, std::size_t offset,
-                          std::span<const model::BodyState> states, std::vector<BodyDerivative>& out)
-{
-    const model::SoftGrid& grid = world.softBodies[g];
-    const model::Body& body = world.bodies[grid.body.index];
-    const Scalar invMass = 1 / grid.ellipseMass;
-    const Vec2 gravity = world.settings.gravity;
-    // Each ellipse's share of the body's drag coefficient, b·m/M, over its mass m.
-    const Scalar drag = world.settings.drag * body.invMass;
-    const model::BodyState* s = states.data() + offset;
-    BodyDerivative* d = out.data() + offset;
-    // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
-    // ellipses about it) for the internal damping, which acts on what is left over.
-    Vec2 centre = Vec2::Zero();
-    Vec2 velocity = Vec2::Zero();
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        centre += s[i].position;
-        velocity += s[i].velocity;
-    }
-    centre /= static_cast<Scalar>(grid.size());
-    velocity /= static_cast<Scalar>(grid.size());
-    Scalar spin = 0;
-    Scalar spread = 0;
-    Scalar dot = 0;
-    Scalar turn = 0;
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const Vec2 r = s[i].position - centre;
-        spin += cross(r, Vec2(s[i].velocity - velocity));
-        spread += r.squaredNorm();
-        dot += grid.restPositions[i].dot(r);
-        turn += cross(grid.restPositions[i], r);
-    }
-    const Scalar omega = spread > 0 ? spin / spread : 0;
-    const Scalar internal = constants::kSoftInternalDampingRate;
-    // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
-    // of the rest lattice puts it (see softShapeMatchingStiffness).
-    const Scalar norm = std::hypot(dot, turn);
-    const Scalar c = norm > 0 ? dot / norm : 1;
-    const Scalar sn = norm > 0 ? turn / norm : 0;
-    const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
-    // Written with scalars: see addGridSpringForces.
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const Scalar px = s[i].position.x() - centre.x();
-        const Scalar py = s[i].position.y() - centre.y();
-        const Scalar vx = s[i].velocity.x();
-        const Scalar vy = s[i].velocity.y();
-        const Vec2& r = grid.restPositions[i];
-        // v − v_rigid, with v_rigid = v_c + ω × p; and x − g, with g = c + R·r.
-        const Scalar relativeX = vx - (velocity.x() - omega * py);
-        const Scalar relativeY = vy - (velocity.y() + omega * px);
-        const Scalar offX = px - (c * r.x() - sn * r.y());
-        const Scalar offY = py - (sn * r.x() + c * r.y());
-        d[i].velocity = s[i].velocity;
-        d[i].angularVelocity = 0;
-        d[i].acceleration.x() = gravity.x() - drag * vx - internal * relativeX - matching * offX;
-        d[i].acceleration.y() = gravity.y() - drag * vy - internal * relativeY - matching * offY;
-        d[i].angularAcceleration = 0;
-    }
-    addGridSpringForces(grid, s, d, invMass);
-}
-
-/// addOneSoftGridForces for every grid, on two threads when there are enough ellipses.
+/// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of every
+/// soft grid: writes every field of their entries in `out`, with the accelerations (every ellipse
+/// of a grid has the same mass, so forces are divided by it up front).
 void addSoftGridForces(const model::World& world, std::span<const model::BodyState> states,
-                       std::vector<BodyDerivative>& out, TaskPair* tasks)
+                       std::vector<BodyDerivative>& out)
 {
-    // Where each grid's ellipses start in the state list.
-    const std::size_t grids = world.softBodies.size();
-    std::vector<std::size_t> offsets(grids + 1, world.bodies.size());
-    for (std::size_t g = 0; g < grids; ++g)
-        offsets[g + 1] = offsets[g] + world.softBodies[g].size();
-    const std::size_t ellipses = offsets[grids] - offsets[0];
-    const auto range = [&](std::size_t begin, std::size_t end) {
-        for (std::size_t g = begin; g < end; ++g)
-            addOneSoftGridForces(world, g, offsets[g], states, out);
-    };
-    if (!tasks || grids < 2 || ellipses < constants::kParallelMinSoftEllipses) {
-        range(0, grids);
-        return;
+    std::size_t offset = world.bodies.size();
+    for (const model::SoftGrid& grid : world.softBodies) {
+        const model::Body& body = world.bodies[grid.body.index];
+        const Scalar invMass = 1 / grid.ellipseMass;
+        const Vec2 gravity = world.settings.gravity;
+        // Each ellipse's share of the body's drag coefficient, b·m/M, over its mass m.
+        const Scalar drag = world.settings.drag * body.invMass;
+        const model::BodyState* s = states.data() + offset;
+        BodyDerivative* d = out.data() + offset;
+        // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
+        // ellipses about it) for the internal damping, which acts on what is left over.
+        Vec2 centre = Vec2::Zero();
+        Vec2 velocity = Vec2::Zero();
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            centre += s[i].position;
+            velocity += s[i].velocity;
+        }
+        centre /= static_cast<Scalar>(grid.size());
+        velocity /= static_cast<Scalar>(grid.size());
+        Scalar spin = 0;
+        Scalar spread = 0;
+        Scalar dot = 0;
+        Scalar turn = 0;
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Vec2 r = s[i].position - centre;
+            spin += cross(r, Vec2(s[i].velocity - velocity));
+            spread += r.squaredNorm();
+            dot += grid.restPositions[i].dot(r);
+            turn += cross(grid.restPositions[i], r);
+        }
+        const Scalar omega = spread > 0 ? spin / spread : 0;
+        const Scalar internal = constants::kSoftInternalDampingRate;
+        // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
+        // of the rest lattice puts it (see softShapeMatchingStiffness).
+        const Scalar norm = std::hypot(dot, turn);
+        const Scalar c = norm > 0 ? dot / norm : 1;
+        const Scalar sn = norm > 0 ? turn / norm : 0;
+        const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
+        // Written with scalars: see addGridSpringForces.
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const Scalar px = s[i].position.x() - centre.x();
+            const Scalar py = s[i].position.y() - centre.y();
+            const Scalar vx = s[i].velocity.x();
+            const Scalar vy = s[i].velocity.y();
+            const Vec2& r = grid.restPositions[i];
+            // v − v_rigid, with v_rigid = v_c + ω × p; and x − g, with g = c + R·r.
+            const Scalar relativeX = vx - (velocity.x() - omega * py);
+            const Scalar relativeY = vy - (velocity.y() + omega * px);
+            const Scalar offX = px - (c * r.x() - sn * r.y());
+            const Scalar offY = py - (sn * r.x() + c * r.y());
+            d[i].velocity = s[i].velocity;
+            d[i].angularVelocity = 0;
+            d[i].acceleration.x() = gravity.x() - drag * vx - internal * relativeX - matching * offX;
+            d[i].acceleration.y() = gravity.y() - drag * vy - internal * relativeY - matching * offY;
+            d[i].angularAcceleration = 0;
+        }
+        addGridSpringForces(grid, s, d, invMass);
+        offset += grid.size();
     }
-    // Two halves of about as many ellipses each.
-    std::size_t cut = 1;
-    while (cut + 1 < grids && 2 * (offsets[cut] - offsets[0]) < ellipses)
-        ++cut;
-    tasks->run([&](int half) { half == 0 ? range(0, cut) : range(cut, grids); });
 }
 
 /// The states of the bodies with each soft body's entry replaced by its grid's aggregate, for the
@@ -262,7 +237,7 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 }
 
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
-                        std::vector<BodyDerivative>& out, TaskPair* tasks)
+                        std::vector<BodyDerivative>& out)
 {
     const std::size_t n = world.bodies.size();
     // The bodies' entries start from zero; the ellipses' are written whole by addSoftGridForces.
@@ -285,7 +260,7 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
     // A soft body's own entry stands still: its grid carries its motion.
     for (const model::SoftGrid& grid : world.softBodies)
         out[grid.body.index] = BodyDerivative{};
-    addSoftGridForces(world, states, out, tasks);
+    addSoftGridForces(world, states, out);
 
     // Scene springs see a soft body as its grid's aggregate.
     std::vector<SoftAggregate> aggregates;

@@ -12,8 +12,6 @@
 
 namespace impetus::controller {
 
-class TaskPair;
-
 /// The time derivative of one body's state: (ẋ, θ̇, v̇, ω̇).
 struct BodyDerivative {
     Vec2 velocity = Vec2::Zero(); ///< ẋ, m/s
@@ -51,10 +49,8 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 /// body would feel them (a = F/M + (τ/I) × r), which keeps momentum and angular momentum.
 /// Fixed bodies get no acceleration: they keep the velocity they are given. A soft body's own
 /// entry gets a zero derivative: its state follows its grid (updateSoftOwners).
-/// `states` must have stateCount(world) entries; `out` is resized to the same. With `tasks`, two
-/// or more large soft grids are shared between two threads, a grid each at a time (every grid's
-/// forces are its own, so the result is the same bits either way).
+/// `states` must have stateCount(world) entries; `out` is resized to the same.
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
-                        std::vector<BodyDerivative>& out, TaskPair* tasks = nullptr);
+                        std::vector<BodyDerivative>& out);
 
 } // namespace impetus::controller

@@ -34,13 +34,6 @@ public:
     /// Which method this is.
     virtual model::IntegratorKind kind() const = 0;
 
-    /// Lets the force evaluations share large soft grids with a second thread (computeDerivatives);
-    /// nullptr (the default) evaluates on the calling thread. The caller keeps `tasks` alive.
-    void useTasks(TaskPair* tasks) { m_tasks = tasks; }
-
-protected:
-    TaskPair* m_tasks = nullptr;
-
 private:
     std::vector<model::BodyState> m_currentStates;
     std::vector<BodyDerivative> m_currentDerivatives;

@@ -28,8 +28,6 @@ Simulation::Simulation(SolverSettings settings)
     , m_tasks(settings.secondThread ? std::make_unique<TaskPair>() : nullptr)
 {
     m_contactSolver.useTasks(m_tasks.get());
-    for (Integrator* integrator : {m_euler.get(), m_semiImplicitEuler.get(), m_rk4.get()})
-        integrator->useTasks(m_tasks.get());
 }
 
 Integrator& Simulation::integratorFor(model::IntegratorKind kind)
@@ -332,7 +330,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // Phase 0: the start of the step, as the solvers see it.
     gatherStates(world, m_startStates);
     setUpSolverBodies(world);
-    computeDerivatives(world, m_startStates, m_startDerivatives, m_tasks.get());
+    computeDerivatives(world, m_startStates, m_startDerivatives);
 
     // Phase 1: collision detection at the start-of-step poses, with speculative margins.
     collide(world, h);

@@ -81,10 +81,6 @@ inline constexpr std::size_t kParallelMinConstraints = 512;
 /// taking half of the pairs in order (same results, in the same order).
 inline constexpr std::size_t kParallelMinPairs = 1024;
 
-/// Soft grids with at least this many ellipses in all get their forces on two threads, a grid at a
-/// time (controller::computeDerivatives); below it the hand-over costs more than it saves.
-inline constexpr std::size_t kParallelMinSoftEllipses = 1024;
-
 /// How many times a thread checks for new work before it sleeps: about 0.1–0.2 ms. The solvers
 /// hand out work every few tens of microseconds, and waking a sleeping thread costs about as
 /// much on a virtual machine (the idle virtual CPU has to be scheduled again): measured here,

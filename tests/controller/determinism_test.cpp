@@ -97,44 +97,5 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     EXPECT_EQ(twoThreads, oneThread);
 }
 
-// Two soft boxes with 1024 ellipses each (over constants::kParallelMinSoftEllipses) share their
-// force evaluations between two threads, a grid each: the same bits as on one thread.
-TEST(Determinism, SoftGridsGiveTheSameBitsOnOneThreadOrTwo)
-{
-    model::World twoThreads;
-    model::Body ground;
-    ground.name = "ground";
-    ground.shape = model::Box{8, 0.5};
-    ground.state.position = Vec2(0, -0.25);
-    ground.fixed = true;
-    ground.updateDerived();
-    twoThreads.bodies.push_back(ground);
-    for (int i = 0; i < 2; ++i) {
-        model::Body jelly;
-        jelly.name = i == 0 ? "left" : "right";
-        jelly.shape = model::Box{1, 1};
-        jelly.state.position = Vec2(-1.5 + 3 * i, 0.8 + 0.3 * i);
-        jelly.state.angle = 0.2 * i;
-        model::SoftSettings soft;
-        soft.ellipsesPerSquareMeter = 1024;
-        jelly.soft = soft;
-        jelly.updateDerived();
-        twoThreads.bodies.push_back(jelly);
-    }
-    model::World oneThread = twoThreads;
-    Simulation withThread;
-    SolverSettings single;
-    single.secondThread = false;
-    Simulation withoutThread(single);
-    for (int i = 0; i < 60; ++i) {
-        withThread.step(twoThreads);
-        withoutThread.step(oneThread);
-    }
-    ASSERT_EQ(twoThreads.softBodies.size(), 2u);
-    ASSERT_GE(twoThreads.softBodies[0].size() + twoThreads.softBodies[1].size(), constants::kParallelMinSoftEllipses);
-    EXPECT_GT(twoThreads.collisionCount, 0); // they landed
-    EXPECT_EQ(twoThreads, oneThread);
-}
-
 } // namespace
 } // namespace impetus::controller
