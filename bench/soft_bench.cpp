@@ -1,7 +1,7 @@
 // Soft mode's speed goal (issue 5): 10 soft bodies of 1 m², at 256 ellipses per m², falling into a
 // box. Prints the wall time of each 1/60 s frame of simulated time, averaged over the fall, the
 // landing and the settled pile, against the goal of 8 ms per frame.
-// Run: build/bench/bench/impetus-bench-soft [--density N] [--integrator NAME] [--seconds S]
+// Run: build/bench/bench/impetus-bench-soft [--density N] [--integrator NAME] [--seconds S] [--one-thread]
 
 #include "controller/simulation.h"
 #include "controller/soft_body_builder.h"
@@ -62,9 +62,16 @@ int main(int argc, char** argv)
     Scalar density = 256;
     model::IntegratorKind integrator = model::IntegratorKind::Rk4;
     double seconds = 6;
-    for (int i = 1; i + 1 < argc; i += 2) {
+    controller::SolverSettings settings;
+    for (int i = 1; i < argc; i += 2) {
         const std::string flag = argv[i];
-        if (flag == "--density") {
+        if (flag == "--one-thread") {
+            settings.secondThread = false;
+            --i; // a flag without a value
+        } else if (i + 1 >= argc) {
+            std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
+            return 2;
+        } else if (flag == "--density") {
             density = std::atof(argv[i + 1]);
         } else if (flag == "--seconds") {
             seconds = std::atof(argv[i + 1]);
@@ -76,7 +83,7 @@ int main(int argc, char** argv)
             }
             integrator = *kind;
         } else {
-            std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
             return 2;
         }
     }
@@ -86,7 +93,7 @@ int main(int argc, char** argv)
     std::size_t ellipses = 0;
     for (const model::SoftGrid& grid : world.softBodies)
         ellipses += grid.size();
-    controller::Simulation simulation;
+    controller::Simulation simulation(settings);
     const int stepsPerFrame = static_cast<int>(std::lround(1.0 / 60.0 / world.settings.timeStep));
     const int frames = static_cast<int>(std::lround(seconds * 60));
     std::vector<double> frameMs;
