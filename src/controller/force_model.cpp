@@ -127,6 +127,9 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         const Scalar c = norm > 0 ? dot / norm : 1;
         const Scalar sn = norm > 0 ? turn / norm : 0;
         const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
+        // Shape matching is damped in the same proportion as the grid springs (c/k), so the
+        // body's own damping setting governs how much of a landing it gives back.
+        const Scalar matchingDamping = softShapeMatchingDamping(grid, body) * invMass;
         // Written with scalars: see addGridSpringForces.
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const Scalar px = s[i].position.x() - centre.x();
@@ -141,8 +144,10 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
             const Scalar offY = py - (sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
             d[i].angularVelocity = 0;
-            d[i].acceleration.x() = gravity.x() - drag * vx - internal * relativeX - matching * offX;
-            d[i].acceleration.y() = gravity.y() - drag * vy - internal * relativeY - matching * offY;
+            d[i].acceleration.x() =
+                gravity.x() - drag * vx - (internal + matchingDamping) * relativeX - matching * offX;
+            d[i].acceleration.y() =
+                gravity.y() - drag * vy - (internal + matchingDamping) * relativeY - matching * offY;
             d[i].angularAcceleration = 0;
         }
         addGridSpringForces(grid, s, d, invMass);

@@ -100,8 +100,10 @@ void computeRates(model::SoftGrid& grid)
         grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
                                                                                    damping[i].yy) / grid.ellipseMass);
     }
-    // The internal damping adds its rate to every ellipse's, and shape matching its k_s/m.
-    grid.maxDampingRate += constants::kSoftInternalDampingRate;
+    // The internal damping adds its rate to every ellipse's, shape matching its damping c_s/m and
+    // its stiffness k_s/m.
+    grid.maxDampingRate += constants::kSoftInternalDampingRate +
+                           constants::kSoftShapeMatching * grid.settings.damping / massOf(grid);
     grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
@@ -114,6 +116,11 @@ bool matches(const model::SoftGrid& grid, const model::Body& body)
 } // namespace
 
 bool isSoftBody(const model::Body& body) { return body.soft.has_value() && !body.fixed; }
+
+Scalar softShapeMatchingDamping(const model::SoftGrid& grid, const model::Body& body)
+{
+    return constants::kSoftShapeMatching * grid.settings.damping * grid.ellipseMass * body.invMass;
+}
 
 Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body)
 {

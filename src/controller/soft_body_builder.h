@@ -52,6 +52,10 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
 /// rigid motion of the rest lattice puts it (Müller et al. 2005); the forces sum to zero and have
 /// zero torque about the centre of mass, and store ½k_s·|x − g|² (counted as elastic energy).
 Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body);
+/// The damping of each ellipse's pull towards its goal, N·s/m: kSoftShapeMatching·c·m/M, the same
+/// ratio to softShapeMatchingStiffness as the grid springs' damping c to their stiffness k. It acts
+/// on the ellipse's velocity relative to the grid's rigid motion.
+Scalar softShapeMatchingDamping(const model::SoftGrid& grid, const model::Body& body);
 
 /// Makes world.softBodies match world.bodies: builds the grid of every soft body that has none,
 /// rebuilds one whose body's shape, mass or soft settings changed, drops grids of bodies that are

@@ -464,9 +464,10 @@ TEST(SoftStability, SubstepsWhenTheGridIsTooStiffAndSaysSo)
     controller::prepareSoftBodies(world);
     const model::SoftGrid& grid = world.softBodies[0];
     // 8k/m for the uniform lattice, 8 · 2000 · 256, plus shape matching's κ·k/M (and the
-    // damping's 8c/m + β).
+    // damping's 8c/m + β + shape matching's κ·c/M).
     EXPECT_NEAR(grid.maxSpringRate, 8 * 2000 * 256.0 + constants::kSoftShapeMatching * 2000 / 1.0, 1e-6);
-    EXPECT_NEAR(grid.maxDampingRate, 8 * 1 * 256.0 + constants::kSoftInternalDampingRate, 1e-9);
+    EXPECT_NEAR(grid.maxDampingRate,
+                8 * 1 * 256.0 + constants::kSoftInternalDampingRate + constants::kSoftShapeMatching * 1 / 1.0, 1e-9);
     for (const model::IntegratorKind kind :
          {model::IntegratorKind::Euler, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Rk4}) {
         world.settings.integrator = kind;
