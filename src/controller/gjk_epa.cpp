@@ -407,8 +407,10 @@ Vec2 polygonPairPoint(const Support& a, const Support& b, const Vec2& normal)
     const std::array<Vec2, 2> featureA = a.polygonFeature(normal);
     const std::array<Vec2, 2> featureB = b.polygonFeature(-normal);
     const Vec2 tangent(-normal.y(), normal.x());
-    const auto [minA, maxA] = std::minmax(tangent.dot(featureA[0]), tangent.dot(featureA[1]));
-    const auto [minB, maxB] = std::minmax(tangent.dot(featureB[0]), tangent.dot(featureB[1]));
+    // std::minmax of two values returns references to them, which must outlive the pair: the
+    // initializer-list form returns copies.
+    const auto [minA, maxA] = std::minmax({tangent.dot(featureA[0]), tangent.dot(featureA[1])});
+    const auto [minB, maxB] = std::minmax({tangent.dot(featureB[0]), tangent.dot(featureB[1])});
     // With no overlap (vertex against vertex, apart) this is the middle of the gap between them.
     const Scalar along = 0.5 * (std::max(minA, minB) + std::min(maxA, maxB));
     const Scalar across = 0.5 * (normal.dot(featureA[0]) + normal.dot(featureB[0]));
