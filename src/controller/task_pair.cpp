@@ -6,16 +6,20 @@ namespace impetus::controller {
 
 namespace {
 
-/// Waits until `value` differs from `old`: spins a while first, since the solvers hand out a task
-/// every few tens of microseconds and a futex sleep and wake-up costs about as much; then sleeps.
-void waitForChange(const std::atomic<std::uint64_t>& value, std::uint64_t old)
+/// Waits until `value` reaches at least `target`: spins a while first, since the solvers hand out
+/// a task every few tens of microseconds and a sleep and wake-up costs about as much; then sleeps.
+void waitUntilAtLeast(const std::atomic<std::uint64_t>& value, std::uint64_t target)
 {
     for (int i = 0; i < constants::kTaskSpinCount; ++i) {
-        if (value.load(std::memory_order_acquire) != old)
+        if (value.load(std::memory_order_acquire) >= target)
             return;
     }
-    while (value.load(std::memory_order_acquire) == old)
-        value.wait(old, std::memory_order_acquire);
+    for (;;) {
+        const std::uint64_t now = value.load(std::memory_order_acquire);
+        if (now >= target)
+            return;
+        value.wait(now, std::memory_order_acquire);
+    }
 }
 
 } // namespace
@@ -45,7 +49,14 @@ void TaskPair::run(const std::function<void(int)>& task)
     const std::uint64_t generation = m_generation.fetch_add(1, std::memory_order_acq_rel) + 1;
     m_generation.notify_one();
     task(0);
-    waitForChange(m_done, generation - 1);
+    // Whoever comes first runs the second half. On a busy machine the worker may not have been
+    // given a processor yet: then this thread runs it too rather than wait, and the step costs
+    // what it would on one thread instead of more.
+    std::uint64_t unclaimed = generation - 1;
+    if (m_claimed.compare_exchange_strong(unclaimed, generation, std::memory_order_acq_rel))
+        task(1);
+    else
+        waitUntilAtLeast(m_done, generation);
     m_task = nullptr;
 }
 
@@ -53,10 +64,14 @@ void TaskPair::workerLoop()
 {
     std::uint64_t seen = 0;
     for (;;) {
-        waitForChange(m_generation, seen);
+        waitUntilAtLeast(m_generation, seen + 1);
         seen = m_generation.load(std::memory_order_acquire);
         if (m_stop.load(std::memory_order_acquire))
             return;
+        // The task of generation `seen` is there to take until the caller takes it itself.
+        std::uint64_t unclaimed = seen - 1;
+        if (!m_claimed.compare_exchange_strong(unclaimed, seen, std::memory_order_acq_rel))
+            continue;
         (*m_task)(1);
         m_done.store(seen, std::memory_order_release);
         m_done.notify_one();

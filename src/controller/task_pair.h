@@ -11,7 +11,8 @@
 namespace impetus::controller {
 
 /// A worker thread that runs `task(1)` while the calling thread runs `task(0)`, and returns when
-/// both are done. The worker is started on the first run() and stopped by the destructor. On a
+/// both are done. If the worker has not started task(1) by the time task(0) is done (a busy
+/// machine), the calling thread runs it itself. The worker is started on the first run() and stopped by the destructor. On a
 /// machine with one hardware thread, run() calls task(0) and then task(1) on the caller's thread:
 /// a task whose two halves touch disjoint data gives the same bits either way.
 class TaskPair {
@@ -34,6 +35,8 @@ private:
     const std::function<void(int)>* m_task = nullptr;
     /// Bumped by run() to hand the worker a task; the worker waits for it to change.
     std::atomic<std::uint64_t> m_generation{0};
+    /// The last generation whose second half someone (the worker or the caller) has taken.
+    std::atomic<std::uint64_t> m_claimed{0};
     /// Set to the generation the worker has finished.
     std::atomic<std::uint64_t> m_done{0};
     std::atomic<bool> m_stop{false};

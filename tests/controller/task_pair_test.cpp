@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
 #include <thread>
 
 namespace impetus::controller {
@@ -38,12 +39,47 @@ TEST(TaskPair, TheSecondHalfRunsOnAnotherThreadWhenThereIsOne)
 {
     TaskPair tasks;
     std::array<std::thread::id, 2> ids{};
-    tasks.run([&](int half) { ids[static_cast<std::size_t>(half)] = std::this_thread::get_id(); });
+    std::atomic<bool> secondStarted{false};
+    tasks.run([&](int half) {
+        ids[static_cast<std::size_t>(half)] = std::this_thread::get_id();
+        if (half == 1)
+            secondStarted = true;
+        // The first half waits for the second to start, so the worker takes it (otherwise the
+        // caller may take it itself when it finishes first). With one hardware thread the halves
+        // run one after the other and there is nothing to wait for.
+        while (half == 0 && TaskPair::twoThreadsAvailable() && !secondStarted)
+            std::this_thread::yield();
+    });
     EXPECT_EQ(ids[0], std::this_thread::get_id());
-    if (TaskPair::twoThreadsAvailable())
+    if (TaskPair::twoThreadsAvailable()) {
         EXPECT_NE(ids[1], ids[0]);
-    else
+    } else {
         EXPECT_EQ(ids[1], ids[0]);
+    }
+}
+
+// Each half runs exactly once per run, whichever thread takes the second: here the first half is
+// too short for the worker to wake, so the caller often takes the second half itself.
+TEST(TaskPair, EachHalfRunsExactlyOnceWhoeverTakesIt)
+{
+    TaskPair tasks;
+    std::array<std::atomic<int>, 2> runs{};
+    int callerTookSecond = 0;
+    for (int round = 0; round < 5000; ++round) {
+        std::thread::id second;
+        tasks.run([&](int half) {
+            ++runs[static_cast<std::size_t>(half)];
+            if (half == 1)
+                second = std::this_thread::get_id();
+        });
+        if (second == std::this_thread::get_id())
+            ++callerTookSecond;
+    }
+    EXPECT_EQ(runs[0].load(), 5000);
+    EXPECT_EQ(runs[1].load(), 5000);
+    if (!TaskPair::twoThreadsAvailable()) {
+        EXPECT_EQ(callerTookSecond, 5000);
+    }
 }
 
 TEST(TaskPair, StopsCleanlyWhetherOrNotItEverRan)
