@@ -63,28 +63,33 @@ int main(int argc, char** argv)
     model::IntegratorKind integrator = model::IntegratorKind::Rk4;
     double seconds = 6;
     controller::SolverSettings settings;
-    for (int i = 1; i < argc; i += 2) {
+    const auto usage = [&] {
+        std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
+        return 2;
+    };
+    for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "--one-thread") {
             settings.secondThread = false;
-            --i; // a flag without a value
-        } else if (i + 1 >= argc) {
-            std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
-            return 2;
-        } else if (flag == "--density") {
-            density = std::atof(argv[i + 1]);
+            continue;
+        }
+        // Every other flag takes a value.
+        if (i + 1 >= argc)
+            return usage();
+        const char* value = argv[++i];
+        if (flag == "--density") {
+            density = std::atof(value);
         } else if (flag == "--seconds") {
-            seconds = std::atof(argv[i + 1]);
+            seconds = std::atof(value);
         } else if (flag == "--integrator") {
-            const std::optional<model::IntegratorKind> kind = model::integratorFromName(argv[i + 1]);
+            const std::optional<model::IntegratorKind> kind = model::integratorFromName(value);
             if (!kind) {
-                std::fprintf(stderr, "unknown integrator %s\n", argv[i + 1]);
+                std::fprintf(stderr, "unknown integrator %s\n", value);
                 return 2;
             }
             integrator = *kind;
         } else {
-            std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
-            return 2;
+            return usage();
         }
     }
 

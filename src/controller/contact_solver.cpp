@@ -83,37 +83,6 @@ Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Matrix2d
     return Eigen::Vector2d::Zero();
 }
 
-/// A body that can move. Fixed bodies are never written to, so that the two halves of a split
-/// world, which share the ground, never write to the same memory.
-bool movable(const SolverBody& body) { return body.invMass > 0 || body.invInertia > 0; }
-
-/// applyImpulse for contacts: the same arithmetic, leaving fixed bodies untouched (for finite
-/// impulses their velocity would not change anyway: v − 0·P = v).
-void applyContactImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
-{
-    if (movable(a)) {
-        a.velocity -= a.invMass * impulse;
-        a.angularVelocity -= a.invInertia * cross(rA, impulse);
-    }
-    if (movable(b)) {
-        b.velocity += b.invMass * impulse;
-        b.angularVelocity += b.invInertia * cross(rB, impulse);
-    }
-}
-
-/// applyPositionImpulse, leaving fixed bodies untouched.
-void applyContactPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
-{
-    if (movable(a)) {
-        a.position -= a.invMass * impulse;
-        a.angle -= a.invInertia * cross(rA, impulse);
-    }
-    if (movable(b)) {
-        b.position += b.invMass * impulse;
-        b.angle += b.invInertia * cross(rB, impulse);
-    }
-}
-
 /// Marks the movable ones of a contact's bodies as held by a contact force.
 void markContactForce(SolverBody& a, SolverBody& b)
 {
@@ -142,7 +111,7 @@ void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<Sol
         const Scalar delta = updated - p.tangentImpulse;
         p.tangentImpulse = updated;
         if (delta != 0) {
-            applyContactImpulse(a, b, p.rA, p.rB, delta * t);
+            applyImpulse(a, b, p.rA, p.rB, delta * t);
             acted = true;
         }
     }
@@ -176,8 +145,8 @@ void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<Sol
         const Scalar delta1 = x1 - old1;
         const Scalar delta2 = x2 - old2;
         if (delta1 != 0 || delta2 != 0) {
-            applyContactImpulse(a, b, p1.rA, p1.rB, delta1 * n);
-            applyContactImpulse(a, b, p2.rA, p2.rB, delta2 * n);
+            applyImpulse(a, b, p1.rA, p1.rB, delta1 * n);
+            applyImpulse(a, b, p2.rA, p2.rB, delta2 * n);
             acted = true;
         }
     } else {
@@ -188,7 +157,7 @@ void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<Sol
             const Scalar delta = updated - p.normalImpulse;
             p.normalImpulse = updated;
             if (delta != 0) {
-                applyContactImpulse(a, b, p.rA, p.rB, delta * n);
+                applyImpulse(a, b, p.rA, p.rB, delta * n);
                 acted = true;
             }
         }
@@ -226,7 +195,7 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
         const Vec2 rA = mid - a.position;
         const Vec2 rB = mid - b.position;
         const Scalar mass = effectiveMass(a, b, rA, rB, n);
-        applyContactPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
+        applyPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
         // A resting point within the slop moves nothing: the sine and cosine are computed again
         // only for a body that turned, not at every look.
         if (movable(a))
@@ -557,14 +526,14 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         }
         // Only a body that can move has been struck (a fixed body's contacts keep their status).
         for (SolverBody* body : {&a, &b}) {
-            if (body->invMass > 0 || body->invInertia > 0)
+            if (movable(*body))
                 body->hadImpact = true;
         }
 
         // Everything touching a body that just changed velocity may now approach (or stop).
         // Fixed bodies never change, so their many contacts need no second look.
         for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
-            if (bodies[body].invMass == 0 && bodies[body].invInertia == 0)
+            if (!movable(bodies[body]))
                 continue;
             for (std::uint32_t at = m_bodyConstraintStart[body]; at < m_bodyConstraintStart[body + 1]; ++at) {
                 const std::uint32_t cj = m_bodyConstraints[at];
@@ -601,7 +570,7 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     b.impactLateVelocity += tau * dvB;
     b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
     for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
-        if (bodies[body].invMass == 0 && bodies[body].invInertia == 0)
+        if (!movable(bodies[body]))
             continue; // a fixed body's motion never changes: nothing to remember
         m_impulseTimeline.push_back({m_lastTimedImpulse[body], tau, dv});
         m_lastTimedImpulse[body] = static_cast<std::uint32_t>(m_impulseTimeline.size() - 1);
@@ -655,7 +624,7 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
                 const VelocityPoint& p = v.points[static_cast<std::size_t>(i)];
                 if (p.normalImpulse == 0 && p.tangentImpulse == 0)
                     continue;
-                applyContactImpulse(a, b, p.rA, p.rB, p.normalImpulse * v.normal + p.tangentImpulse * t);
+                applyImpulse(a, b, p.rA, p.rB, p.normalImpulse * v.normal + p.tangentImpulse * t);
                 v.acted = true;
             }
         }

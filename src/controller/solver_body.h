@@ -31,23 +31,37 @@ inline Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec
     return b.velocity + cross(b.angularVelocity, rB) - a.velocity - cross(a.angularVelocity, rA);
 }
 
-/// Applies the impulse P (N·s) at the contact: −P on A at rA, +P on B at rB.
+/// A body that can move (a fixed body has zero inverse mass and inertia).
+inline bool movable(const SolverBody& body) { return body.invMass > 0 || body.invInertia > 0; }
+
+/// Applies the impulse P (N·s) at the contact: −P on A at rA, +P on B at rB. A fixed body is not
+/// written to (for a finite P its velocity would not change anyway, v − 0·P = v), so the two
+/// halves of a split world (docs/physics.md, "Two threads"), which share the ground, never write
+/// to the same memory.
 inline void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
 {
-    a.velocity -= a.invMass * impulse;
-    a.angularVelocity -= a.invInertia * cross(rA, impulse);
-    b.velocity += b.invMass * impulse;
-    b.angularVelocity += b.invInertia * cross(rB, impulse);
+    if (movable(a)) {
+        a.velocity -= a.invMass * impulse;
+        a.angularVelocity -= a.invInertia * cross(rA, impulse);
+    }
+    if (movable(b)) {
+        b.velocity += b.invMass * impulse;
+        b.angularVelocity += b.invInertia * cross(rB, impulse);
+    }
 }
 
 /// Moves the bodies as the position-level impulse P would (non-linear Gauss–Seidel): −P on A at
-/// rA, +P on B at rB, in m·kg.
+/// rA, +P on B at rB, in m·kg. Fixed bodies are left untouched, as in applyImpulse.
 inline void applyPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
 {
-    a.position -= a.invMass * impulse;
-    a.angle -= a.invInertia * cross(rA, impulse);
-    b.position += b.invMass * impulse;
-    b.angle += b.invInertia * cross(rB, impulse);
+    if (movable(a)) {
+        a.position -= a.invMass * impulse;
+        a.angle -= a.invInertia * cross(rA, impulse);
+    }
+    if (movable(b)) {
+        b.position += b.invMass * impulse;
+        b.angle += b.invInertia * cross(rB, impulse);
+    }
 }
 
 /// The effective mass 1/K (kg) for an impulse along `direction` at rA, rB; 0 when nothing can move.
