@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -118,6 +119,7 @@ struct Options {
     std::vector<std::string> engines = engineNames();
     bool quick = false;
     bool oneThread = false; ///< Impetus without its second thread
+    bool noBatches = false; ///< Impetus's velocity passes one contact at a time
 };
 
 /// "box2d,chipmunk" → {"box2d", "chipmunk"}, in the canonical order; nullopt for an unknown name.
@@ -144,7 +146,7 @@ std::optional<std::vector<std::string>> parseEngineList(const std::string& list)
 
 void printUsage(std::ostream& out)
 {
-    out << "usage: impetus-bench-compare [--steps N] [--scene NAME] [--engines LIST] [--one-thread] [--quick]\n"
+    out << "usage: impetus-bench-compare [--steps N] [--scene NAME] [--engines LIST] [--one-thread] [--no-batches] [--quick]\n"
            "  --steps N       steps per scene (default "
         << kDefaultSteps << ", " << kQuickSteps
         << " with --quick)\n"
@@ -153,6 +155,7 @@ void printUsage(std::ostream& out)
         out << ' ' << recipe.name;
     out << "\n  --engines LIST  comma-separated, from impetus,box2d,chipmunk (default: all three)\n"
            "  --one-thread    Impetus without its second thread (the same results, one core)\n"
+           "  --no-batches    Impetus's velocity passes one contact at a time, not in batches\n"
            "  --quick         small scenes and few steps: a smoke test, not a measurement\n";
 }
 
@@ -189,6 +192,8 @@ std::optional<Options> parseArguments(int argc, char** argv)
             options.engines = *engines;
         } else if (argument == "--one-thread") {
             options.oneThread = true;
+        } else if (argument == "--no-batches") {
+            options.noBatches = true;
         } else if (argument == "--quick") {
             options.quick = true;
         } else if (argument == "--help" || argument == "-h") {
@@ -385,6 +390,8 @@ int main(int argc, char** argv)
     announceChipmunk();
     controller::SolverSettings impetusSolver;
     impetusSolver.secondThread = !options->oneThread;
+    if (options->noBatches)
+        impetusSolver.batchMinConstraints = std::numeric_limits<std::size_t>::max();
     std::cout << "# Impetus vs Box2D " << box2dVersion() << " vs Chipmunk " << chipmunkVersion() << "\n\n"
               << "The engines run one after the other; " << std::thread::hardware_concurrency()
               << " hardware threads. Box2D 2.4 and Chipmunk use one thread; Impetus uses "

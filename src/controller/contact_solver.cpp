@@ -4,6 +4,7 @@
 #include "model/constants.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +15,10 @@ namespace {
 /// The 2×2 block solve is used only when K's condition number stays below this: two contact
 /// points that (nearly) coincide make K singular, and then the points are solved one at a time.
 constexpr Scalar kMaxBlockConditionNumber = 1000.0;
+
+/// The allowed approach speed of a batch lane's missing second point, m/s: so large that the
+/// point can never become active, and still finite, so that no lane ever computes ∞ − ∞.
+constexpr Scalar kUnreachableGapSpeed = 1e300;
 
 /// The tangent of a contact: the normal turned clockwise, so (n, t) is a right-handed pair.
 Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
@@ -581,11 +586,14 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 {
     // The velocity passes see only what they need, packed in solving order: a third of the
     // constraint's size, read front to back, eight times a step.
-    m_velocityConstraints.resize(m_constraints.size());
+    std::size_t scalarCount = 0;
+    for (std::size_t g = 0; g < m_groups.size(); ++g)
+        scalarCount += scalarGroup(g).size();
+    m_velocityConstraints.resize(scalarCount);
     std::size_t slot = 0;
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
         m_groupStart[g] = slot;
-        for (const std::uint32_t ci : m_groups[g]) {
+        for (const std::uint32_t ci : scalarGroup(g)) {
             const ContactConstraint& c = m_constraints[ci];
             VelocityConstraint& v = m_velocityConstraints[slot++];
             v.bodyA = c.bodyA;
@@ -615,7 +623,14 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
         }
     }
     m_groupStart[m_groups.size()] = slot;
-    forEachGroup([&](std::span<VelocityConstraint> group, int) {
+    if (m_batched) {
+        for (SolverBody& scratch : m_scratchBodies)
+            scratch = SolverBody{};
+        packBatches(bodies, h);
+    }
+    forEachGroup([&](std::span<VelocityConstraint> group, int g) {
+        if (m_batched)
+            warmStartBatches(batchesOf(static_cast<std::size_t>(g)));
         for (VelocityConstraint& v : group) {
             SolverBody& a = bodies[v.bodyA];
             SolverBody& b = bodies[v.bodyB];
@@ -633,7 +648,9 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 
 void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 {
-    forEachGroup([&](std::span<VelocityConstraint> group, int) {
+    forEachGroup([&](std::span<VelocityConstraint> group, int g) {
+        if (m_batched)
+            solveBatches(batchesOf(static_cast<std::size_t>(g)));
         for (VelocityConstraint& v : group)
             solveVelocityConstraint(v, bodies);
     });
@@ -642,8 +659,8 @@ void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 {
     std::size_t slot = 0;
-    for (const std::vector<std::uint32_t>& group : m_groups) {
-        for (const std::uint32_t ci : group) {
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        for (const std::uint32_t ci : scalarGroup(g)) {
             ContactConstraint& c = m_constraints[ci];
             const VelocityConstraint& v = m_velocityConstraints[slot++];
             for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
@@ -651,6 +668,23 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
                 c.points[i].tangentImpulse = v.points[i].tangentImpulse;
             }
             if (v.acted)
+                markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
+        }
+    }
+    if (!m_batched)
+        return;
+    for (std::size_t bi = 0; bi < m_batches.size(); ++bi) {
+        const ContactBatch& batch = m_batches[bi];
+        for (int lane = 0; lane < kBatchLanes; ++lane) {
+            const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + static_cast<std::size_t>(lane)];
+            if (ci == kNoConstraint)
+                continue;
+            ContactConstraint& c = m_constraints[ci];
+            for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                c.points[i].normalImpulse = batch.points[i].normalImpulse[lane];
+                c.points[i].tangentImpulse = batch.points[i].tangentImpulse[lane];
+            }
+            if (batch.acted[lane] != 0)
                 markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
         }
     }
@@ -678,10 +712,13 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
     for (std::vector<std::uint32_t>& group : m_groups)
         group.clear();
     m_split = m_constraints.size() >= constants::kParallelMinConstraints;
+    m_batched = m_constraints.size() >= m_batchMinConstraints && !m_constraints.empty();
     if (!m_split) {
         m_groups[0].resize(m_constraints.size());
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
             m_groups[0][ci] = ci;
+        if (m_batched)
+            colour(bodies);
         return;
     }
     // Cut the movable bodies into two halves at the median of their positions along the longer
@@ -712,6 +749,130 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
         const std::uint8_t hb = m_half[m_constraints[ci].bodyB];
         const std::uint8_t half = ha == kFixedHalf ? hb : (hb == kFixedHalf || hb == ha ? ha : 2);
         m_groups[half == kFixedHalf ? 0 : half].push_back(ci);
+    }
+    if (m_batched)
+        colour(bodies);
+}
+
+void ContactSolver::colour(std::span<const SolverBody> bodies)
+{
+    // Greedy colouring in the group's order: each constraint takes the lowest colour that none of
+    // its movable bodies' constraints has taken yet. Fixed bodies are shared freely, as the batches
+    // never write to them. A pile needs about a dozen colours; a constraint that finds all 64
+    // taken is solved on its own after the batches.
+    constexpr int kColours = 64;
+    m_batches.clear();
+    m_batchLanes.clear();
+    m_colourMasks.resize(bodies.size());
+    std::size_t batchCount = 0;
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        const std::vector<std::uint32_t>& group = m_groups[g];
+        m_scalarGroups[g].clear();
+        m_batchGroupStart[g] = batchCount;
+        if (group.empty())
+            continue;
+        std::fill(m_colourMasks.begin(), m_colourMasks.end(), 0);
+        m_colourOf.resize(group.size());
+        std::array<std::size_t, kColours + 1> count{};
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            const ContactConstraint& c = m_constraints[group[k]];
+            const bool moveA = movable(bodies[c.bodyA]);
+            const bool moveB = movable(bodies[c.bodyB]);
+            const std::uint64_t taken = (moveA ? m_colourMasks[c.bodyA] : 0) | (moveB ? m_colourMasks[c.bodyB] : 0);
+            const int colour = std::countr_one(taken);
+            m_colourOf[k] = static_cast<std::uint8_t>(colour);
+            ++count[static_cast<std::size_t>(colour)];
+            if (colour == kColours) {
+                m_scalarGroups[g].push_back(group[k]);
+                continue;
+            }
+            const std::uint64_t bit = std::uint64_t{1} << colour;
+            if (moveA)
+                m_colourMasks[c.bodyA] |= bit;
+            if (moveB)
+                m_colourMasks[c.bodyB] |= bit;
+        }
+        // Each colour fills whole batches, the last one padded: lay the lanes out colour by colour,
+        // keeping the group's order within a colour.
+        std::array<std::size_t, kColours> firstLane{};
+        std::size_t lanes = m_batchLanes.size();
+        for (std::size_t colour = 0; colour < kColours; ++colour) {
+            firstLane[colour] = lanes;
+            lanes += (count[colour] + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
+        }
+        m_batchLanes.resize(lanes, kNoConstraint);
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            if (m_colourOf[k] < kColours)
+                m_batchLanes[firstLane[m_colourOf[k]]++] = group[k];
+        }
+        batchCount = lanes / kBatchLanes;
+    }
+    m_batchGroupStart[m_groups.size()] = batchCount;
+}
+
+void ContactSolver::packBatches(std::span<SolverBody> bodies, Scalar h)
+{
+    m_batches.resize(m_batchLanes.size() / kBatchLanes);
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        SolverBody& scratch = m_scratchBodies[g];
+        const auto writable = [&](std::uint32_t index) { return movable(bodies[index]) ? &bodies[index] : &scratch; };
+        for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
+            ContactBatch& batch = m_batches[bi];
+            batch = ContactBatch{};
+            for (int lane = 0; lane < kBatchLanes; ++lane) {
+                const auto ul = static_cast<std::size_t>(lane);
+                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
+                if (ci == kNoConstraint) {
+                    // Padding: a contact between two bodies that cannot move, which never acts.
+                    batch.bodyA[ul] = batch.bodyB[ul] = &scratch;
+                    batch.writeA[ul] = batch.writeB[ul] = &scratch;
+                    batch.k11[lane] = batch.k22[lane] = 1;
+                    batch.points[1].gapSpeed[lane] = kUnreachableGapSpeed;
+                    continue;
+                }
+                const ContactConstraint& c = m_constraints[ci];
+                batch.bodyA[ul] = &bodies[c.bodyA];
+                batch.bodyB[ul] = &bodies[c.bodyB];
+                batch.writeA[ul] = writable(c.bodyA);
+                batch.writeB[ul] = writable(c.bodyB);
+                batch.normalX[lane] = c.normal.x();
+                batch.normalY[lane] = c.normal.y();
+                batch.friction[lane] = c.friction;
+                batch.invMassA[lane] = bodies[c.bodyA].invMass;
+                batch.invInertiaA[lane] = bodies[c.bodyA].invInertia;
+                batch.invMassB[lane] = bodies[c.bodyB].invMass;
+                batch.invInertiaB[lane] = bodies[c.bodyB].invInertia;
+                const Vec2 t = tangentOf(c.normal);
+                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                    const ContactConstraintPoint& p = c.points[i];
+                    BatchPoint& q = batch.points[i];
+                    q.normalArmA[lane] = cross(p.rA, c.normal);
+                    q.normalArmB[lane] = cross(p.rB, c.normal);
+                    q.tangentArmA[lane] = cross(p.rA, t);
+                    q.tangentArmB[lane] = cross(p.rB, t);
+                    q.normalMass[lane] = p.normalMass;
+                    q.tangentMass[lane] = p.tangentMass;
+                    q.normalImpulse[lane] = p.normalImpulse;
+                    q.tangentImpulse[lane] = p.tangentImpulse;
+                    q.gapSpeed[lane] = std::max(p.separation, 0.0) / h;
+                }
+                if (c.pointCount == 2) {
+                    batch.k11[lane] = c.k(0, 0);
+                    batch.k12[lane] = c.k(0, 1);
+                    batch.k22[lane] = c.k(1, 1);
+                    batch.inverse11[lane] = c.normalMassBlock(0, 0);
+                    batch.inverse12[lane] = c.normalMassBlock(0, 1);
+                    batch.inverse22[lane] = c.normalMassBlock(1, 1);
+                    batch.blockSolve[lane] = c.blockSolve ? -1 : 0;
+                } else {
+                    // The second point has no mass and can never close its gap: only the
+                    // "first point alone" and "none" cases can hold, which is the one-point solve.
+                    batch.k11[lane] = c.k(0, 0);
+                    batch.k22[lane] = 1;
+                    batch.points[1].gapSpeed[lane] = kUnreachableGapSpeed;
+                }
+            }
+        }
     }
 }
 

@@ -14,6 +14,7 @@
 /// never changes a velocity, so it cannot add kinetic energy. See docs/physics.md, "Contacts".
 
 #include "controller/collision_types.h"
+#include "controller/contact_batches.h"
 #include "controller/force_model.h"
 #include "controller/solver_body.h"
 #include "controller/task_pair.h"
@@ -135,10 +136,18 @@ public:
     /// Lets the solver run the halves of a split world on `tasks` (owned by the caller, who keeps it
     /// alive); nullptr runs them one after the other on the calling thread, with the same result.
     void useTasks(TaskPair* tasks) { m_tasks = tasks; }
+    /// A step with at least `count` constraints runs its velocity passes in batches
+    /// (contact_batches.h); constants::kBatchMinConstraints unless set. Tests set 0 to batch every
+    /// world, or SIZE_MAX to batch none.
+    void setBatchMinConstraints(std::size_t count) { m_batchMinConstraints = count; }
+    /// Whether this step's velocity passes run in batches.
+    bool batched() const { return m_batched; }
     /// Orders the constraints for solving. A large world (constants::kParallelMinConstraints) is
     /// cut into two halves that share no movable body, solved side by side on two threads, then
-    /// the constraints that join them; a small one keeps the broad phase's order. The order, and
-    /// so the result, depends only on the world, not on how many threads the machine has.
+    /// the constraints that join them; a small one keeps the broad phase's order. In a batched
+    /// step each of these groups is then coloured for the velocity passes: colour by colour,
+    /// kBatchLanes contacts at a time. The order, and so the result, depends only on the world,
+    /// not on how many threads the machine has.
     void partition(std::span<const SolverBody> bodies);
     /// Starts the velocity passes: packs the constraints for them and applies last step's
     /// contact-force impulses (warm starting).
@@ -170,6 +179,21 @@ private:
     void runGroups(const std::function<void(int)>& solve);
     void forEachGroupIndex(const std::function<void(std::span<const std::uint32_t>, int)>& solve);
     void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
+    /// Colours the constraints of each group and lays out the batches' lanes (partition()).
+    void colour(std::span<const SolverBody> bodies);
+    /// Fills the batches from the constraints, for this step's velocity passes.
+    void packBatches(std::span<SolverBody> bodies, Scalar h);
+    /// The constraints of group g that the velocity passes solve one at a time.
+    const std::vector<std::uint32_t>& scalarGroup(std::size_t g) const
+    {
+        return m_batched ? m_scalarGroups[g] : m_groups[g];
+    }
+    /// The batches of group g.
+    std::span<ContactBatch> batchesOf(std::size_t g)
+    {
+        return std::span<ContactBatch>(m_batches).subspan(m_batchGroupStart[g],
+                                                          m_batchGroupStart[g + 1] - m_batchGroupStart[g]);
+    }
 
     /// A velocity change an impact gave a body at time τ·h within the step; `previous` chains the
     /// same body's earlier entries.
@@ -211,6 +235,20 @@ private:
     std::vector<Vec2> m_rotations; ///< per body: (cos, sin) of its angle, in the position passes
     std::array<std::size_t, 4> m_groupStart{}; ///< where each group starts in m_velocityConstraints
     TaskPair* m_tasks = nullptr; ///< the second thread, if any (see useTasks)
+
+    static constexpr std::uint32_t kNoConstraint = UINT32_MAX; ///< a padding lane
+    std::size_t m_batchMinConstraints = constants::kBatchMinConstraints;
+    bool m_batched = false; ///< this step's velocity passes run in batches
+    std::vector<ContactBatch> m_batches; ///< group 0's, then group 1's, then group 2's
+    std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint
+    std::array<std::size_t, 4> m_batchGroupStart{}; ///< where each group's batches start
+    /// Per group: the constraints left over when every colour is taken at one of their bodies,
+    /// solved one at a time after the group's batches.
+    std::array<std::vector<std::uint32_t>, 3> m_scalarGroups;
+    std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
+    std::vector<std::uint8_t> m_colourOf; ///< per constraint of the group being coloured
+    /// Where a lane writes a fixed body's velocity, one per group, each on its own cache line.
+    std::array<SolverBody, 3> m_scratchBodies{};
 };
 
 } // namespace impetus::controller

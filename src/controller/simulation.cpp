@@ -28,6 +28,7 @@ Simulation::Simulation(SolverSettings settings)
     , m_tasks(settings.secondThread ? std::make_unique<TaskPair>() : nullptr)
 {
     m_contactSolver.useTasks(m_tasks.get());
+    m_contactSolver.setBatchMinConstraints(settings.batchMinConstraints);
 }
 
 Integrator& Simulation::integratorFor(model::IntegratorKind kind)

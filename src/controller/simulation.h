@@ -43,6 +43,9 @@ struct SolverSettings {
     /// Use a second thread for large worlds (docs/physics.md, "Two threads"). The result is the
     /// same bits either way; false saves the thread.
     bool secondThread = true;
+    /// A step with at least this many contact constraints runs its velocity passes in batches of
+    /// contacts of one colour (contact_batches.h). Tests set 0 to batch every world.
+    std::size_t batchMinConstraints = constants::kBatchMinConstraints;
 };
 
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built

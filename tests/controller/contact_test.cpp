@@ -4,6 +4,7 @@
 #include "controller/contact_solver.h"
 #include "controller/diagnostics.h"
 #include "controller/simulation.h"
+#include "controller/solver_under_test.h"
 #include "support/world_builders.h"
 
 #include <gtest/gtest.h>
@@ -66,7 +67,7 @@ TEST_P(OneDimensionalCollision, MatchesTheTextbook)
     world.bodies.push_back(withMaterial(makeBall("a", c.m1, 0.25, Vec2(-1, 0), Vec2(c.v1, 0)), c.e, 0.3));
     world.bodies.push_back(withMaterial(makeBall("b", c.m2, 0.25, Vec2(1, 0), Vec2(c.v2, 0)), c.e, 0.3));
     const Vec2 p0 = linearMomentum(world);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 480; ++i) {
         simulation.step(world);
         ASSERT_NEAR((linearMomentum(world) - p0).norm(), 0.0, 1e-9 * std::max(1.0, p0.norm())) << "step " << i;
@@ -99,7 +100,7 @@ TEST(Bounce, ApexesFollowESquaredToTheN)
     model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
     world.bodies.push_back(withMaterial(makeGround("floor", 10, 1), e, 0.0));
     world.bodies.push_back(withMaterial(makeBall("ball", 1.0, r, Vec2(0, 1.0 + r)), e, 0.0));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     std::vector<Scalar> apexes{1.0};
     Scalar previousVy = 0;
     for (int i = 0; i < 240 * 6 && apexes.size() < 5; ++i) {
@@ -150,7 +151,7 @@ TEST(Incline, BlockSlidesWithTheoreticalAcceleration)
     const Scalar theta = kPi / 6;
     const Scalar mu = 0.2;
     model::World world = makeIncline(theta, mu, makeBox("block", 1.0, 0.4, 0.2, Vec2::Zero()));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 240);
     const Scalar expected = kG * (std::sin(theta) - mu * std::cos(theta)) * 1.0;
     EXPECT_NEAR(downhillSpeed(world, theta), expected, 0.01 * expected);
@@ -162,7 +163,7 @@ TEST(Incline, BlockSticksWhenFrictionExceedsTanTheta)
     const Scalar theta = kPi / 6;
     model::World world = makeIncline(theta, 0.7, makeBox("block", 1.0, 0.4, 0.2, Vec2::Zero()));
     const Vec2 start = world.bodies[1].state.position;
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 480);
     EXPECT_LT((world.bodies[1].state.position - start).norm(), 1e-3);
     EXPECT_TRUE(world.bodies[1].colliding);
@@ -173,7 +174,7 @@ TEST(Incline, DiskRollsWithTwoThirdsGSinTheta)
 {
     const Scalar theta = 20 * kPi / 180;
     model::World world = makeIncline(theta, 0.5, makeBall("disk", 1.0, 0.2, Vec2::Zero()));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 240);
     const Scalar expected = 2.0 / 3.0 * kG * std::sin(theta);
     EXPECT_NEAR(downhillSpeed(world, theta), expected, 0.01 * expected);
@@ -192,7 +193,7 @@ TEST(Friction, ConveyorBeltCarriesABoxUpToItsSpeed)
     belt.state.velocity = Vec2(u, 0);
     world.bodies.push_back(belt);
     world.bodies.push_back(withMaterial(makeBox("parcel", 2.0, 0.5, 0.3, Vec2(0, 0.15)), 0.0, mu));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 48); // 0.2 s: still slipping (μ·g·t = 0.78 m/s < u)
     EXPECT_NEAR(world.bodies[1].state.velocity.x(), mu * kG * 0.2, 0.01 * mu * kG * 0.2);
     run(world, simulation, 192); // 1 s: long since carried at the belt's speed
@@ -222,7 +223,7 @@ model::World makeCradle(int n, int moving, Scalar v)
 TEST(NewtonsCradle, OneBallInOneBallOut)
 {
     model::World world = makeCradle(5, 1, 2.0);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 120);
     for (int i = 0; i < 4; ++i)
         EXPECT_NEAR(world.bodies[static_cast<std::size_t>(i)].state.velocity.norm(), 0.0, 1e-6) << "ball " << i;
@@ -232,7 +233,7 @@ TEST(NewtonsCradle, OneBallInOneBallOut)
 TEST(NewtonsCradle, TwoBallsInTwoBallsOut)
 {
     model::World world = makeCradle(5, 2, 1.5);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 120);
     for (int i = 0; i < 3; ++i)
         EXPECT_NEAR(world.bodies[static_cast<std::size_t>(i)].state.velocity.norm(), 0.0, 1e-6) << "ball " << i;
@@ -255,7 +256,7 @@ TEST(Tunnelling, FastBallBouncesOffAThinWall)
     wall.updateDerived();
     world.bodies.push_back(withMaterial(wall, 1.0, 0.0));
     world.bodies.push_back(withMaterial(makeBall("bullet", 0.1, 0.05, Vec2(0, 0), Vec2(200, 0)), 1.0, 0.0));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 24); // 0.1 s
     EXPECT_NEAR(world.bodies[1].state.velocity.x(), -200.0, 1e-6);
     EXPECT_LT(world.bodies[1].state.position.x(), 5.0 - 0.05);
@@ -279,7 +280,7 @@ TEST(Tunnelling, StruckBallDoesNotPassThroughTheWallBehindIt)
         // The striker touches the ball as the step starts, so the ball travels a whole step.
         world.bodies.push_back(withMaterial(makeBall("striker", 1.0, 0.1, Vec2(-0.2, 0), Vec2(v, 0)), 1.0, 0.0));
         world.bodies.push_back(withMaterial(makeBall("struck", 1.0, 0.1, Vec2(0, 0)), 1.0, 0.0));
-        Simulation simulation;
+        Simulation simulation(settingsUnderTest());
         run(world, simulation, 24);
         // In front of the wall's face (x = 0.11), pressed into it by no more than the position
         // solver allows (3 slops; see ContactSolver::solvePositions). Without the margin for what
@@ -302,7 +303,7 @@ TEST(Bounce, BallDroppedOnARestingBallBouncesBackUp)
     world.bodies.push_back(withMaterial(makeGround("floor", 10, 1), 1.0, 0.0));
     world.bodies.push_back(withMaterial(makeBall("bottom", 1.0, r, Vec2(0, r)), 1.0, 0.0));
     world.bodies.push_back(withMaterial(makeBall("top", 1.0, r, Vec2(0, 3 * r + 1.0)), 1.0, 0.0));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 120); // the bottom ball settles under load
     Scalar highest = 0;
     Scalar bottomHighest = 0;
@@ -328,7 +329,7 @@ TEST(MovingFixedBody, BoxRidesAPlatformMovingDown)
     platform.state.velocity = Vec2(0, -1);
     world.bodies.push_back(platform);
     world.bodies.push_back(withMaterial(makeBox("crate", 1.0, 0.5, 0.5, Vec2(0, 0.25)), 0.0, 0.5));
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     run(world, simulation, 240);
     const Scalar platformTop = world.bodies[0].state.position.y() + 0.1;
     EXPECT_NEAR(world.bodies[1].state.position.y() - 0.25, platformTop, constants::kLinearSlop);
@@ -351,7 +352,7 @@ TEST(MovingFixedBody, PinToAMovingCarrierHolds)
     pin.anchorA = Vec2(0, 0.9);
     pin.anchorB = Vec2(0, 0);
     world.joints.push_back(pin);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 240; ++i) {
         simulation.step(world);
         const Vec2 onBob = world.bodies[1].worldPoint(Vec2(0, 0.9));
@@ -383,7 +384,7 @@ TEST(CollisionEvents, RestingOnAConcaveBodyBeginsOnce)
         const Scalar firstX = rightFirst ? 1.5 : -1.5;
         world.bodies.push_back(makeBox("first", 1.0, 0.8, 0.4, Vec2(firstX, 2.2)));
         world.bodies.push_back(makeBox("second", 1.0, 0.8, 0.4, Vec2(-firstX, 2.2)));
-        Simulation simulation;
+        Simulation simulation(settingsUnderTest());
         run(world, simulation, 240);
         EXPECT_EQ(world.collisionCount, 2) << "right first: " << rightFirst;
         EXPECT_EQ(world.bodies[0].collisionCount, 2) << "right first: " << rightFirst;
@@ -434,7 +435,7 @@ TEST(ZeroGravity, RandomPolygonsConserveMomentumAndNeverGainEnergy)
     const Scalar l0 = angularMomentum(world);
     Scalar kinetic = computeEnergy(world).kinetic;
     const Scalar k0 = kinetic;
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 240 * 3; ++i) {
         simulation.step(world);
         ASSERT_NEAR((linearMomentum(world) - p0).norm(), 0.0, 1e-9) << "step " << i;
@@ -469,7 +470,7 @@ TEST(ZeroGravity, ObliqueImpactConservesAngularMomentumExactly)
         world.bodies.push_back(withMaterial(b, e, 0.4));
         const Vec2 p0 = linearMomentum(world);
         const Scalar l0 = angularMomentum(world);
-        Simulation simulation;
+        Simulation simulation(settingsUnderTest());
         for (int i = 0; i < 240; ++i) {
             simulation.step(world);
             ASSERT_NEAR((linearMomentum(world) - p0).norm(), 0.0, 1e-12) << "e = " << e;

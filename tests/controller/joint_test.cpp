@@ -1,6 +1,7 @@
 // Pin and rod joints against pendulum theory.
 
 #include "controller/simulation.h"
+#include "controller/solver_under_test.h"
 #include "support/pendulum_theory.h"
 #include "support/world_builders.h"
 
@@ -26,7 +27,7 @@ constexpr Scalar kG = 9.81;
 Scalar measurePeriod(model::World& world, std::size_t index, Scalar duration, Scalar pivotX,
                      std::vector<Scalar>* distances = nullptr, Vec2 pivot = Vec2::Zero())
 {
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     std::vector<Scalar> crossings;
     Scalar previousX = world.bodies[index].state.position.x() - pivotX;
     const Scalar h = world.settings.timeStep;
@@ -121,7 +122,7 @@ TEST(PinJoint, HoldsTwoBodiesTogether)
     pin.anchorB = Vec2(-0.5, 0);
     world.joints.push_back(pin);
     const Vec2 p0 = world.bodies[0].state.velocity * 1.0 + world.bodies[1].state.velocity * 2.0;
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 480; ++i) {
         simulation.step(world);
         const Vec2 hingeA = world.bodies[0].worldPoint(Vec2(0.5, 0));

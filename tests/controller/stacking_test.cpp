@@ -1,6 +1,7 @@
 // Stacking: boxes rest at their true height and stacks stand.
 
 #include "controller/simulation.h"
+#include "controller/solver_under_test.h"
 #include "model/example_scenes.h"
 #include "support/world_builders.h"
 
@@ -31,7 +32,7 @@ model::World makeStack(int count)
 TEST(Stacking, RestingBoxSitsAtItsTrueHeight)
 {
     model::World world = makeStack(1);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 240 * 2; ++i)
         simulation.step(world);
     const model::BodyState& s = world.bodies[1].state;
@@ -47,7 +48,7 @@ TEST(Stacking, RestingBoxSitsAtItsTrueHeight)
 TEST(Stacking, TenBoxStackStandsForTenSeconds)
 {
     model::World world = makeStack(10);
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 240 * 10; ++i)
         simulation.step(world);
     for (int i = 0; i < 10; ++i) {
@@ -64,7 +65,7 @@ TEST(Stacking, PyramidOfBase20Stands)
 {
     model::World world = model::makePyramid(20);
     const model::World start = world;
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 240 * 5; ++i)
         simulation.step(world);
     const Vec2 drift = world.bodies.back().state.position - start.bodies.back().state.position;
@@ -76,13 +77,35 @@ TEST(Stacking, PyramidOfBase20Stands)
     }
 }
 
+// At rest, the ground carries the whole weight: the normal impulses of the ground's contacts over
+// one step add up to M·g·h. A pyramid of base 20 (about 600 contacts) runs its velocity passes in
+// batches in either build, the ten-box stack one contact at a time in the plain build.
+TEST(Stacking, TheGroundCarriesTheWholeWeight)
+{
+    for (const int base : {1, 20}) {
+        model::World world = base == 1 ? makeStack(10) : model::makePyramid(base);
+        Simulation simulation(settingsUnderTest());
+        for (int i = 0; i < 240 * 2; ++i)
+            simulation.step(world);
+        Scalar weight = 0;
+        for (const model::Body& body : world.bodies)
+            weight += body.fixed ? 0 : body.mass * -world.settings.gravity.y();
+        Scalar carried = 0;
+        for (const model::ContactRecord& record : world.contacts) {
+            if (world.body(record.bodyA).fixed || world.body(record.bodyB).fixed)
+                carried += record.normalImpulses[0] + record.normalImpulses[1];
+        }
+        EXPECT_NEAR(carried / world.settings.timeStep, weight, 1e-6 * weight) << "base " << base;
+    }
+}
+
 // Box2D's large pyramid (base 100, 5,050 boxes) stands: after 500 steps the top box has moved
 // less than 0.1 m sideways (Box2D 2.4 itself: 0.13 m, see docs/benchmarks.md).
 TEST(Stacking, LargePyramidStands)
 {
     model::World world = model::makePyramid(100);
     const Vec2 start = world.bodies.back().state.position;
-    Simulation simulation;
+    Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 500; ++i)
         simulation.step(world);
     const Vec2 drift = world.bodies.back().state.position - start;

@@ -1,0 +1,144 @@
+#include "controller/contact_batches.h"
+
+namespace impetus::controller {
+
+namespace {
+
+/// The velocities of one side (A or B) of every lane.
+struct LaneVelocities {
+    Lanes x{};
+    Lanes y{};
+    Lanes angular{};
+};
+
+// Loading and storing go lane by lane: the bodies lie anywhere in memory. No two lanes of a batch
+// share a movable body, so the stores never overwrite one another. (Loading whole 256-bit rows and
+// transposing them was tried and was slower.)
+inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bodies)
+{
+    LaneVelocities v;
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        const SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
+        v.x[lane] = body.velocity.x();
+        v.y[lane] = body.velocity.y();
+        v.angular[lane] = body.angularVelocity;
+    }
+    return v;
+}
+
+inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const LaneVelocities& v)
+{
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
+        body.velocity = Vec2(v.x[lane], v.y[lane]);
+        body.angularVelocity = v.angular[lane];
+    }
+}
+
+inline Lanes select(const LaneMask& condition, const Lanes& ifTrue, const Lanes& ifFalse)
+{
+    return condition ? ifTrue : ifFalse;
+}
+
+/// The impulse λ along the unit direction (dx, dy), with arms rA × d and rB × d: −λd on A and +λd
+/// on B, as applyImpulse does for one contact.
+inline void apply(const ContactBatch& c, LaneVelocities& a, LaneVelocities& b, const Lanes& impulse,
+                  const Lanes& dx, const Lanes& dy, const Lanes& armA, const Lanes& armB)
+{
+    const Lanes px = impulse * dx;
+    const Lanes py = impulse * dy;
+    a.x -= c.invMassA * px;
+    a.y -= c.invMassA * py;
+    a.angular -= c.invInertiaA * (impulse * armA);
+    b.x += c.invMassB * px;
+    b.y += c.invMassB * py;
+    b.angular += c.invInertiaB * (impulse * armB);
+}
+
+/// The relative velocity of B's point to A's along (dx, dy): (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
+inline Lanes relativeAlong(const LaneVelocities& a, const LaneVelocities& b, const Lanes& dx, const Lanes& dy,
+                           const Lanes& armA, const Lanes& armB)
+{
+    return (b.x - a.x) * dx + (b.y - a.y) * dy + b.angular * armB - a.angular * armA;
+}
+
+} // namespace
+
+// Two versions of each pass are compiled: one for processors with AVX2, whose 256-bit registers
+// hold a whole batch, and one for any x86-64. The processor picks at load time. Both do the same
+// IEEE arithmetic lane by lane (no fused multiply-add), so they give the same bits.
+__attribute__((target_clones("avx2", "default"))) void warmStartBatches(std::span<ContactBatch> batches)
+{
+    const Lanes zero{};
+    for (ContactBatch& c : batches) {
+        LaneVelocities a = load(c.bodyA);
+        LaneVelocities b = load(c.bodyB);
+        const Lanes tx = c.normalY;
+        const Lanes ty = -c.normalX;
+        for (const BatchPoint& p : c.points) {
+            apply(c, a, b, p.normalImpulse, c.normalX, c.normalY, p.normalArmA, p.normalArmB);
+            apply(c, a, b, p.tangentImpulse, tx, ty, p.tangentArmA, p.tangentArmB);
+            c.acted |= (p.normalImpulse != zero) | (p.tangentImpulse != zero);
+        }
+        store(c.writeA, a);
+        store(c.writeB, b);
+    }
+}
+
+__attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<ContactBatch> batches)
+{
+    const Lanes zero{};
+    for (ContactBatch& c : batches) {
+        LaneVelocities a = load(c.bodyA);
+        LaneVelocities b = load(c.bodyB);
+        // The tangent is the normal turned clockwise, as for a lone contact.
+        const Lanes tx = c.normalY;
+        const Lanes ty = -c.normalX;
+
+        // Friction first, limited by the normal impulse of the last pass.
+        for (BatchPoint& p : c.points) {
+            const Lanes vt = relativeAlong(a, b, tx, ty, p.tangentArmA, p.tangentArmB);
+            const Lanes limit = c.friction * p.normalImpulse;
+            const Lanes wanted = p.tangentImpulse - vt * p.tangentMass;
+            const Lanes clamped = select(wanted < -limit, -limit, select(limit < wanted, limit, wanted));
+            const Lanes delta = clamped - p.tangentImpulse;
+            p.tangentImpulse = clamped;
+            c.acted |= delta != zero;
+            apply(c, a, b, delta, tx, ty, p.tangentArmA, p.tangentArmB);
+        }
+
+        // Normal: the total impulse x solves x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0, where b is the
+        // velocity (plus the allowed approach s⁺/h) without this contact's accumulated impulse.
+        // Every lane tries the active sets in order (both points, the first, the second, none)
+        // and keeps the first that holds.
+        BatchPoint& p1 = c.points[0];
+        BatchPoint& p2 = c.points[1];
+        const Lanes old1 = p1.normalImpulse;
+        const Lanes old2 = p2.normalImpulse;
+        const Lanes b1 = relativeAlong(a, b, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB) + p1.gapSpeed -
+                         (c.k11 * old1 + c.k12 * old2);
+        const Lanes b2 = relativeAlong(a, b, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB) + p2.gapSpeed -
+                         (c.k12 * old1 + c.k22 * old2);
+        const Lanes both1 = -(c.inverse11 * b1 + c.inverse12 * b2);
+        const Lanes both2 = -(c.inverse12 * b1 + c.inverse22 * b2);
+        const LaneMask useBoth = c.blockSolve & (both1 >= zero) & (both2 >= zero);
+        const Lanes first = -b1 * p1.normalMass;
+        const LaneMask useFirst = (first >= zero) & (c.k12 * first + b2 >= zero);
+        const Lanes second = -b2 * p2.normalMass;
+        const LaneMask useSecond = (second >= zero) & (c.k12 * second + b1 >= zero);
+        const Lanes x1 = select(useBoth, both1, select(useFirst, first, zero));
+        const Lanes x2 = select(useBoth, both2, select(useFirst, zero, select(useSecond, second, zero)));
+        const Lanes delta1 = x1 - old1;
+        const Lanes delta2 = x2 - old2;
+        p1.normalImpulse = x1;
+        p2.normalImpulse = x2;
+        c.acted |= (delta1 != zero) | (delta2 != zero);
+        apply(c, a, b, delta1, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB);
+        apply(c, a, b, delta2, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB);
+
+        store(c.writeA, a);
+        store(c.writeB, b);
+    }
+}
+
+} // namespace impetus::controller

@@ -1,0 +1,82 @@
+#pragma once
+/// \file contact_batches.h
+/// The velocity passes of a large world, several contacts at a time. The contacts are coloured so
+/// that no two of one colour share a movable body; a batch holds kBatchLanes contacts of one
+/// colour side by side (structure of arrays), and one sequence of vector instructions solves all
+/// of them at once. Each lane does exactly the arithmetic a lone contact would, so the result does
+/// not depend on the vector width the processor offers. See docs/physics.md, "Batches".
+
+#include "controller/solver_body.h"
+#include "model/scalar.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace impetus::controller {
+
+/// Contacts per batch: four doubles fill one 256-bit register.
+inline constexpr int kBatchLanes = 4;
+
+/// kBatchLanes doubles, one per contact of a batch (GCC vector extension). The alignment is spelled
+/// out: GCC otherwise reports 16 bytes for an alias of a vector type, so containers would not
+/// align it, yet still uses aligned 256-bit loads on it.
+using Lanes = Scalar __attribute__((vector_size(kBatchLanes * sizeof(Scalar)), aligned(kBatchLanes * sizeof(Scalar))));
+/// A per-lane truth value: all bits set (−1) for true, 0 for false.
+using LaneMask = std::int64_t
+    __attribute__((vector_size(kBatchLanes * sizeof(std::int64_t)), aligned(kBatchLanes * sizeof(std::int64_t))));
+
+/// One contact point of every lane. The arms are the lever arms' cross products with the
+/// contact's normal and tangent, r × n and r × t (m), which is all the angular terms need.
+struct BatchPoint {
+    Lanes normalArmA{}; ///< rA × n, m
+    Lanes normalArmB{}; ///< rB × n, m
+    Lanes tangentArmA{}; ///< rA × t, m
+    Lanes tangentArmB{}; ///< rB × t, m
+    Lanes normalMass{}; ///< 1/K along the normal, kg
+    Lanes tangentMass{}; ///< 1/K along the tangent, kg
+    Lanes normalImpulse{}; ///< accumulated, N·s (warm-started)
+    Lanes tangentImpulse{}; ///< accumulated, N·s
+    Lanes gapSpeed{}; ///< max(separation, 0)/h, m/s
+};
+
+/// kBatchLanes contacts of one colour. Every lane has two points: a one-point contact's second
+/// point has no mass and a gap so large it can never become active, and a lane with no contact
+/// (padding at the end of a colour) is such a contact between two bodies that cannot move.
+struct ContactBatch {
+    static_assert(alignof(Lanes) == sizeof(Lanes));
+    Lanes normalX{}; ///< unit normal from A to B
+    Lanes normalY{};
+    Lanes friction{}; ///< mixed μ
+    Lanes invMassA{}; ///< 1/kg (0 for a fixed body)
+    Lanes invInertiaA{}; ///< 1/(kg·m²)
+    Lanes invMassB{};
+    Lanes invInertiaB{};
+    Lanes k11{}; ///< the two-point effective-mass matrix K, 1/kg
+    Lanes k12{};
+    Lanes k22{};
+    Lanes inverse11{}; ///< K⁻¹, kg (used only where blockSolve is set)
+    Lanes inverse12{};
+    Lanes inverse22{};
+    LaneMask blockSolve{}; ///< both points may be solved together (K well conditioned)
+    LaneMask acted{}; ///< an impulse acted on this lane's bodies this step
+    std::array<BatchPoint, 2> points{};
+    /// The bodies each lane reads its velocities from.
+    std::array<const SolverBody*, kBatchLanes> bodyA{};
+    std::array<const SolverBody*, kBatchLanes> bodyB{};
+    /// Where each lane writes them back: the body itself, or for a fixed body (whose velocity an
+    /// impulse never changes) a scratch body, so that batches on two threads never write to one
+    /// shared ground.
+    std::array<SolverBody*, kBatchLanes> writeA{};
+    std::array<SolverBody*, kBatchLanes> writeB{};
+};
+
+/// Applies every lane's accumulated impulses to its bodies (warm starting).
+void warmStartBatches(std::span<ContactBatch> batches);
+
+/// One sequential-impulse pass over the batches in order: per lane, Coulomb friction at each
+/// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, two points solved together by
+/// enumerating the complementarity problem's active sets, as ContactSolver does for one contact.
+void solveBatches(std::span<ContactBatch> batches);
+
+} // namespace impetus::controller
