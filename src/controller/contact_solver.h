@@ -159,9 +159,10 @@ public:
     /// contact force acted on.
     void finishVelocities(std::span<SolverBody> bodies);
 
-    /// One non-linear Gauss–Seidel pass on positions. Returns true when every penetration is
-    /// within the slop.
-    bool solvePositions(std::span<SolverBody> bodies);
+    /// One non-linear Gauss–Seidel pass on positions. `turnedElsewhere`: bodies may have turned
+    /// since this solver's last pass (the first pass of a step, or joints in between). Returns
+    /// true when every penetration is within the slop.
+    bool solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere);
 
     /// The constraints of this step, with their impulses.
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }

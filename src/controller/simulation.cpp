@@ -382,7 +382,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
         syncSoftAggregates(world);
     for (int i = 0; i < m_settings.positionIterations; ++i) {
         const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
-        const bool contactsOk = m_contactSolver.solvePositions(m_bodies);
+        const bool contactsOk = m_contactSolver.solvePositions(m_bodies, i == 0 || !m_jointSolver.empty());
         if (jointsOk && contactsOk)
             break;
     }
