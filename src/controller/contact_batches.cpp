@@ -1,5 +1,8 @@
 #include "controller/contact_batches.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace impetus::controller {
 
 namespace {
@@ -60,6 +63,66 @@ inline Lanes relativeAlong(const LaneVelocities& a, const LaneVelocities& b, con
                            const Lanes& armA, const Lanes& armB)
 {
     return (b.x - a.x) * dx + (b.y - a.y) * dy + b.angular * armB - a.angular * armA;
+}
+
+/// The poses of one side of every lane.
+struct LanePoses {
+    Lanes x{};
+    Lanes y{};
+    Lanes angle{};
+    Lanes cosine{};
+    Lanes sine{};
+};
+
+inline LanePoses loadPoses(const std::array<std::uint32_t, kBatchLanes>& indices, std::span<const BatchPose> poses)
+{
+    LanePoses p;
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        const BatchPose& pose = poses[indices[static_cast<std::size_t>(lane)]];
+        p.x[lane] = pose.x;
+        p.y[lane] = pose.y;
+        p.angle[lane] = pose.angle;
+        p.cosine[lane] = pose.cosine;
+        p.sine[lane] = pose.sine;
+    }
+    return p;
+}
+
+inline void storePoses(const std::array<std::uint32_t, kBatchLanes>& indices, const LanePoses& p,
+                       std::span<BatchPose> poses)
+{
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        BatchPose& pose = poses[indices[static_cast<std::size_t>(lane)]];
+        pose.x = p.x[lane];
+        pose.y = p.y[lane];
+        pose.angle = p.angle[lane];
+        pose.cosine = p.cosine[lane];
+        pose.sine = p.sine[lane];
+    }
+}
+
+/// Below this turn (rad) the cosine and sine are updated by the angle-sum formulas with Taylor
+/// polynomials of the turn, whose first neglected terms (δ⁹/9!, δ¹⁰/10!) stay below 1e-17; a
+/// larger turn takes std::cos and std::sin of the new angle.
+constexpr Scalar kSmallTurn = 0.05;
+
+/// Turns the poses by δ, keeping their cosine and sine up to date.
+inline void turn(LanePoses& p, const Lanes& delta)
+{
+    p.angle += delta;
+    const Lanes d2 = delta * delta;
+    const Lanes sinDelta = delta * (1 - d2 / 6 * (1 - d2 / 20 * (1 - d2 / 42)));
+    const Lanes cosDelta = 1 - d2 / 2 * (1 - d2 / 12 * (1 - d2 / 30 * (1 - d2 / 56)));
+    const Lanes cosine = p.cosine * cosDelta - p.sine * sinDelta;
+    const Lanes sine = p.sine * cosDelta + p.cosine * sinDelta;
+    p.cosine = cosine;
+    p.sine = sine;
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        if (std::abs(delta[lane]) > kSmallTurn) {
+            p.cosine[lane] = std::cos(p.angle[lane]);
+            p.sine[lane] = std::sin(p.angle[lane]);
+        }
+    }
 }
 
 } // namespace
@@ -139,6 +202,60 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
         store(c.writeA, a);
         store(c.writeB, b);
     }
+}
+
+__attribute__((target_clones("avx2", "default"))) Scalar solvePositionBatches(std::span<const PositionBatch> batches,
+                                                                             std::span<BatchPose> poses)
+{
+    const Lanes zero{};
+    const Lanes half = zero + 0.5;
+    const Lanes slop = zero + constants::kLinearSlop;
+    const Lanes factor = zero + constants::kPositionCorrectionFactor;
+    const Lanes maxCorrection = zero + constants::kMaxPositionCorrection;
+    Lanes deepest{};
+    for (const PositionBatch& c : batches) {
+        LanePoses a = loadPoses(c.readA, poses);
+        LanePoses b = loadPoses(c.readB, poses);
+        for (std::size_t i = 0; i < 2; ++i) {
+            // The two surface points and the normal, which turns with A, where the bodies are now.
+            const Lanes nx = a.cosine * c.localNormalX - a.sine * c.localNormalY;
+            const Lanes ny = a.sine * c.localNormalX + a.cosine * c.localNormalY;
+            const Lanes pointAX = a.x + (a.cosine * c.anchors[i].ax - a.sine * c.anchors[i].ay);
+            const Lanes pointAY = a.y + (a.sine * c.anchors[i].ax + a.cosine * c.anchors[i].ay);
+            const Lanes pointBX = b.x + (b.cosine * c.anchors[i].bx - b.sine * c.anchors[i].by);
+            const Lanes pointBY = b.y + (b.sine * c.anchors[i].bx + b.cosine * c.anchors[i].by);
+            const Lanes separation = (pointBX - pointAX) * nx + (pointBY - pointAY) * ny;
+            const LaneMask active = i == 0 ? (zero == zero) : c.secondPoint;
+            deepest = select(active & (separation < deepest), separation, deepest);
+
+            const Lanes wanted = factor * (separation + slop);
+            const Lanes clamped = select(wanted < -maxCorrection, -maxCorrection, select(zero < wanted, zero, wanted));
+            const Lanes correction = select(active, clamped, zero);
+            const Lanes armAX = half * (pointAX + pointBX) - a.x;
+            const Lanes armAY = half * (pointAY + pointBY) - a.y;
+            const Lanes armBX = half * (pointAX + pointBX) - b.x;
+            const Lanes armBY = half * (pointAY + pointBY) - b.y;
+            const Lanes armA = armAX * ny - armAY * nx;
+            const Lanes armB = armBX * ny - armBY * nx;
+            const Lanes k = c.invMassA + c.invMassB + c.invInertiaA * armA * armA + c.invInertiaB * armB * armB;
+            const Lanes mass = select(k > zero, 1 / k, zero);
+            const Lanes impulse = -correction * mass;
+            const Lanes px = impulse * nx;
+            const Lanes py = impulse * ny;
+            a.x -= c.invMassA * px;
+            a.y -= c.invMassA * py;
+            b.x += c.invMassB * px;
+            b.y += c.invMassB * py;
+            turn(a, -(c.invInertiaA * (impulse * armA)));
+            turn(b, c.invInertiaB * (impulse * armB));
+        }
+        storePoses(c.writeA, a, poses);
+        storePoses(c.writeB, b, poses);
+    }
+    Scalar result = 0;
+    for (int lane = 0; lane < kBatchLanes; ++lane)
+        result = std::min(result, deepest[lane]);
+    return result;
 }
 
 } // namespace impetus::controller

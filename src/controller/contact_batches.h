@@ -7,6 +7,7 @@
 /// not depend on the vector width the processor offers. See docs/physics.md, "Batches".
 
 #include "controller/solver_body.h"
+#include "model/constants.h"
 #include "model/scalar.h"
 
 #include <array>
@@ -71,6 +72,41 @@ struct ContactBatch {
     std::array<SolverBody*, kBatchLanes> writeB{};
 };
 
+/// A body's pose as the batched position passes see it, with the cosine and sine of its angle kept
+/// up to date as it turns. One cache line each.
+struct alignas(64) BatchPose {
+    Scalar x = 0; ///< centre of mass, m
+    Scalar y = 0;
+    Scalar angle = 0; ///< rad
+    Scalar cosine = 1; ///< cos(angle)
+    Scalar sine = 0; ///< sin(angle)
+};
+
+/// The same kBatchLanes contacts as a ContactBatch, as the position passes see them: the normal and
+/// each point's two surface points in the bodies' own frames.
+struct PositionBatch {
+    Lanes localNormalX{}; ///< the normal in A's frame
+    Lanes localNormalY{};
+    Lanes invMassA{}; ///< 1/kg
+    Lanes invInertiaA{}; ///< 1/(kg·m²)
+    Lanes invMassB{};
+    Lanes invInertiaB{};
+    /// Each contact point's two surface points, in their bodies' frames.
+    struct Anchors {
+        Lanes ax{}; ///< A's surface point, A's frame, m
+        Lanes ay{};
+        Lanes bx{}; ///< B's surface point, B's frame, m
+        Lanes by{};
+    };
+    std::array<Anchors, 2> anchors{};
+    LaneMask secondPoint{}; ///< the lane's contact has a second point
+    /// Each lane's bodies, as indices into the poses; a fixed body writes to a scratch pose.
+    std::array<std::uint32_t, kBatchLanes> readA{};
+    std::array<std::uint32_t, kBatchLanes> readB{};
+    std::array<std::uint32_t, kBatchLanes> writeA{};
+    std::array<std::uint32_t, kBatchLanes> writeB{};
+};
+
 /// Applies every lane's accumulated impulses to its bodies (warm starting).
 void warmStartBatches(std::span<ContactBatch> batches);
 
@@ -78,5 +114,11 @@ void warmStartBatches(std::span<ContactBatch> batches);
 /// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, two points solved together by
 /// enumerating the complementarity problem's active sets, as ContactSolver does for one contact.
 void solveBatches(std::span<ContactBatch> batches);
+
+/// One non-linear Gauss–Seidel pass over the batches in order, as ContactSolver::solvePositions
+/// does for one contact: each point's separation is pushed towards −slop by moving the two bodies
+/// along the normal, in proportion to their inverse masses. Returns the deepest separation seen
+/// (≤ 0), m.
+Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses);
 
 } // namespace impetus::controller

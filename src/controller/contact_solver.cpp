@@ -54,6 +54,15 @@ Scalar timeToClose(Scalar s, Scalar vn, Scalar a, Scalar h)
     return t <= h ? t : -1;
 }
 
+/// v turned by −θ into a body's frame, given (cos θ, sin θ): the same bits as rotate(v, −θ), since
+/// cos(−θ) = cos θ and sin(−θ) = −sin θ exactly.
+Vec2 intoFrame(const Vec2& v, const Vec2& rotation)
+{
+    const Scalar c = rotation.x();
+    const Scalar s = -rotation.y();
+    return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
 /// Identifies a pair of pieces; lexicographic order is the broad phase's pair order.
 using PairKey = std::array<std::uint32_t, 4>;
 
@@ -220,27 +229,44 @@ Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
 void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
                             std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives)
 {
-    // Each manifold fills its own slot, so a large world's manifolds can be split between two
-    // threads; empty ones are dropped afterwards, keeping the order.
-    m_constraints.resize(manifolds.size());
-    const std::vector<model::ContactRecord>& previous = world.contacts;
-    const auto build = [&](std::size_t begin, std::size_t end) {
-        if (begin < end)
-            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end);
+    // A large world's manifolds are split between two threads. Empty ones (bounding boxes that
+    // overlap without contact) make no constraint: counted first, so that each half writes its
+    // constraints straight to their final slots, in order.
+    const bool split = m_tasks && manifolds.size() >= constants::kParallelMinConstraints;
+    const std::size_t half = split ? manifolds.size() / 2 : manifolds.size();
+    const auto nonEmpty = [&](std::size_t begin, std::size_t end) {
+        return static_cast<std::size_t>(std::count_if(manifolds.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                      manifolds.begin() + static_cast<std::ptrdiff_t>(end),
+                                                      [](const PairManifold& pm) { return pm.manifold.count > 0; }));
     };
-    if (m_tasks && manifolds.size() >= constants::kParallelMinConstraints) {
-        const std::size_t half = manifolds.size() / 2;
-        m_tasks->run([&](int part) { part == 0 ? build(0, half) : build(half, manifolds.size()); });
+    const std::size_t firstCount = nonEmpty(0, half);
+    m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
+    // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
+    m_rotations.resize(bodies.size());
+    const auto rotationsOf = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
+    };
+    const std::vector<model::ContactRecord>& previous = world.contacts;
+    const auto build = [&](std::size_t begin, std::size_t end, std::size_t out) {
+        if (begin < end)
+            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end, out);
+    };
+    if (split) {
+        m_tasks->run([&](int part) {
+            part == 0 ? rotationsOf(0, bodies.size() / 2) : rotationsOf(bodies.size() / 2, bodies.size());
+        });
+        m_tasks->run([&](int part) { part == 0 ? build(0, half, 0) : build(half, manifolds.size(), firstCount); });
     } else {
-        build(0, manifolds.size());
+        rotationsOf(0, bodies.size());
+        build(0, manifolds.size(), 0);
     }
-    std::erase_if(m_constraints, [](const ContactConstraint& c) { return c.pointCount == 0; });
 }
 
 void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                                      std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                                      const std::vector<model::ContactRecord>& previous, std::size_t begin,
-                                     std::size_t end)
+                                     std::size_t end, std::size_t out)
 {
     // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
     // range starts.
@@ -252,10 +278,10 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         previous.begin());
     for (std::size_t k = begin; k < end; ++k) {
         const PairManifold& pm = manifolds[k];
-        ContactConstraint& c = m_constraints[k];
-        c = ContactConstraint{};
         if (pm.manifold.count == 0)
             continue;
+        ContactConstraint& c = m_constraints[out++];
+        c = ContactConstraint{};
         c.bodyA = pm.bodyA;
         c.pieceA = pm.pieceA;
         c.bodyB = pm.bodyB;
@@ -270,7 +296,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         c.restitution = mixRestitution(bodyA.material.restitution, bodyB.material.restitution);
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
-        c.localNormalA = rotate(c.normal, -a.angle);
+        c.localNormalA = intoFrame(c.normal, m_rotations[c.bodyA]);
 
         const PairKey want{c.ownerA, c.pieceA, c.ownerB, c.pieceB};
         while (cursor < previous.size() && keyOf(previous[cursor]) < want)
@@ -291,8 +317,8 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             p.rB = mp.point - b.position;
             const Vec2 surfaceA = mp.point - 0.5 * mp.separation * c.normal;
             const Vec2 surfaceB = mp.point + 0.5 * mp.separation * c.normal;
-            p.localAnchorA = rotate(Vec2(surfaceA - a.position), -a.angle);
-            p.localAnchorB = rotate(Vec2(surfaceB - b.position), -b.angle);
+            p.localAnchorA = intoFrame(Vec2(surfaceA - a.position), m_rotations[c.bodyA]);
+            p.localAnchorB = intoFrame(Vec2(surfaceB - b.position), m_rotations[c.bodyB]);
             p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
             p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
             // Relative acceleration of the two material points along the normal under the smooth
@@ -586,14 +612,20 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 {
     // The velocity passes see only what they need, packed in solving order: a third of the
     // constraint's size, read front to back, eight times a step.
-    std::size_t scalarCount = 0;
-    for (std::size_t g = 0; g < m_groups.size(); ++g)
-        scalarCount += scalarGroup(g).size();
-    m_velocityConstraints.resize(scalarCount);
+    if (m_batched) {
+        m_batches.resize(m_batchLanes.size() / kBatchLanes);
+        m_positionBatches.resize(m_batches.size());
+        runGroups([&](int g) {
+            packGroup(bodies, h, static_cast<std::size_t>(g));
+            warmStartBatches(batchesOf(static_cast<std::size_t>(g)));
+        });
+        return;
+    }
+    m_velocityConstraints.resize(m_constraints.size());
     std::size_t slot = 0;
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
         m_groupStart[g] = slot;
-        for (const std::uint32_t ci : scalarGroup(g)) {
+        for (const std::uint32_t ci : m_groups[g]) {
             const ContactConstraint& c = m_constraints[ci];
             VelocityConstraint& v = m_velocityConstraints[slot++];
             v.bodyA = c.bodyA;
@@ -623,14 +655,7 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
         }
     }
     m_groupStart[m_groups.size()] = slot;
-    if (m_batched) {
-        for (SolverBody& scratch : m_scratchBodies)
-            scratch = SolverBody{};
-        packBatches(bodies, h);
-    }
-    forEachGroup([&](std::span<VelocityConstraint> group, int g) {
-        if (m_batched)
-            warmStartBatches(batchesOf(static_cast<std::size_t>(g)));
+    forEachGroup([&](std::span<VelocityConstraint> group, int) {
         for (VelocityConstraint& v : group) {
             SolverBody& a = bodies[v.bodyA];
             SolverBody& b = bodies[v.bodyB];
@@ -648,9 +673,11 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 
 void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 {
-    forEachGroup([&](std::span<VelocityConstraint> group, int g) {
-        if (m_batched)
-            solveBatches(batchesOf(static_cast<std::size_t>(g)));
+    if (m_batched) {
+        runGroups([&](int g) { solveBatches(batchesOf(static_cast<std::size_t>(g))); });
+        return;
+    }
+    forEachGroup([&](std::span<VelocityConstraint> group, int) {
         for (VelocityConstraint& v : group)
             solveVelocityConstraint(v, bodies);
     });
@@ -658,21 +685,22 @@ void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 
 void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 {
-    std::size_t slot = 0;
-    for (std::size_t g = 0; g < m_groups.size(); ++g) {
-        for (const std::uint32_t ci : scalarGroup(g)) {
-            ContactConstraint& c = m_constraints[ci];
-            const VelocityConstraint& v = m_velocityConstraints[slot++];
-            for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-                c.points[i].normalImpulse = v.points[i].normalImpulse;
-                c.points[i].tangentImpulse = v.points[i].tangentImpulse;
+    if (!m_batched) {
+        std::size_t slot = 0;
+        for (const std::vector<std::uint32_t>& group : m_groups) {
+            for (const std::uint32_t ci : group) {
+                ContactConstraint& c = m_constraints[ci];
+                const VelocityConstraint& v = m_velocityConstraints[slot++];
+                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                    c.points[i].normalImpulse = v.points[i].normalImpulse;
+                    c.points[i].tangentImpulse = v.points[i].tangentImpulse;
+                }
+                if (v.acted)
+                    markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
             }
-            if (v.acted)
-                markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
         }
-    }
-    if (!m_batched)
         return;
+    }
     for (std::size_t bi = 0; bi < m_batches.size(); ++bi) {
         const ContactBatch& batch = m_batches[bi];
         for (int lane = 0; lane < kBatchLanes; ++lane) {
@@ -692,6 +720,8 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 
 bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere)
 {
+    if (m_batched)
+        return solvePositionsInBatches(bodies, turnedElsewhere);
     // Each pass keeps the sines and cosines of the bodies it turns up to date, so they need
     // computing afresh only when something else has turned bodies since: a large world's thousands
     // of them cost as much as a pass.
@@ -716,6 +746,46 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElse
     });
     // Allow a little more than the slop before calling it solved, as the iterations converge
     // towards −slop from either side.
+    return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
+}
+
+bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool turnedElsewhere)
+{
+    // The poses, with their cosines and sines, are taken from the bodies only when something else
+    // may have moved them; the passes keep both up to date, and hand the poses back after each
+    // pass. Each half of a split world does its own bodies.
+    const std::size_t count = bodies.size();
+    const auto overBodies = [&](const std::function<void(std::size_t, std::size_t)>& work) {
+        if (m_split && m_tasks)
+            m_tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
+        else
+            work(0, count);
+    };
+    if (turnedElsewhere || m_poses.size() != count + m_scratchBodies.size()) {
+        m_poses.resize(count + m_scratchBodies.size());
+        overBodies([&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const SolverBody& body = bodies[i];
+                m_poses[i] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
+                                       std::sin(body.angle)};
+            }
+        });
+    }
+    std::array<Scalar, 3> deepest{};
+    runGroups([&](int g) {
+        const auto ug = static_cast<std::size_t>(g);
+        deepest[ug] = solvePositionBatches(std::span<const PositionBatch>(m_positionBatches)
+                                               .subspan(m_batchGroupStart[ug], m_batchGroupStart[ug + 1] - m_batchGroupStart[ug]),
+                                           m_poses);
+    });
+    overBodies([&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (!movable(bodies[i]))
+                continue;
+            bodies[i].position = Vec2(m_poses[i].x, m_poses[i].y);
+            bodies[i].angle = m_poses[i].angle;
+        }
+    });
     return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
 }
 
@@ -773,13 +843,11 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
     // never write to them. A pile needs about a dozen colours; a constraint that finds all 64
     // taken is solved on its own after the batches.
     constexpr int kColours = 64;
-    m_batches.clear();
     m_batchLanes.clear();
     m_colourMasks.resize(bodies.size());
     std::size_t batchCount = 0;
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
         const std::vector<std::uint32_t>& group = m_groups[g];
-        m_scalarGroups[g].clear();
         m_batchGroupStart[g] = batchCount;
         if (group.empty())
             continue;
@@ -794,10 +862,8 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
             const int colour = std::countr_one(taken);
             m_colourOf[k] = static_cast<std::uint8_t>(colour);
             ++count[static_cast<std::size_t>(colour)];
-            if (colour == kColours) {
-                m_scalarGroups[g].push_back(group[k]);
+            if (colour == kColours)
                 continue;
-            }
             const std::uint64_t bit = std::uint64_t{1} << colour;
             if (moveA)
                 m_colourMasks[c.bodyA] |= bit;
@@ -812,77 +878,95 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
             firstLane[colour] = lanes;
             lanes += (count[colour] + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
         }
-        m_batchLanes.resize(lanes, kNoConstraint);
+        // A constraint that found every colour taken gets a batch of its own, after the others.
+        m_batchLanes.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
         for (std::size_t k = 0; k < group.size(); ++k) {
-            if (m_colourOf[k] < kColours)
+            if (m_colourOf[k] < kColours) {
                 m_batchLanes[firstLane[m_colourOf[k]]++] = group[k];
+            } else {
+                m_batchLanes[lanes] = group[k];
+                lanes += kBatchLanes;
+            }
         }
         batchCount = lanes / kBatchLanes;
     }
     m_batchGroupStart[m_groups.size()] = batchCount;
 }
 
-void ContactSolver::packBatches(std::span<SolverBody> bodies, Scalar h)
+void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g)
 {
-    m_batches.resize(m_batchLanes.size() / kBatchLanes);
-    for (std::size_t g = 0; g < m_groups.size(); ++g) {
-        SolverBody& scratch = m_scratchBodies[g];
-        const auto writable = [&](std::uint32_t index) { return movable(bodies[index]) ? &bodies[index] : &scratch; };
-        for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
-            ContactBatch& batch = m_batches[bi];
-            batch = ContactBatch{};
-            for (int lane = 0; lane < kBatchLanes; ++lane) {
-                const auto ul = static_cast<std::size_t>(lane);
-                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
-                if (ci == kNoConstraint) {
-                    // Padding: a contact between two bodies that cannot move, which never acts.
-                    batch.bodyA[ul] = batch.bodyB[ul] = &scratch;
-                    batch.writeA[ul] = batch.writeB[ul] = &scratch;
-                    batch.k11[lane] = batch.k22[lane] = 1;
-                    batch.points[1].gapSpeed[lane] = kUnreachableGapSpeed;
-                    continue;
-                }
-                const ContactConstraint& c = m_constraints[ci];
-                batch.bodyA[ul] = &bodies[c.bodyA];
-                batch.bodyB[ul] = &bodies[c.bodyB];
-                batch.writeA[ul] = writable(c.bodyA);
-                batch.writeB[ul] = writable(c.bodyB);
-                batch.normalX[lane] = c.normal.x();
-                batch.normalY[lane] = c.normal.y();
-                batch.friction[lane] = c.friction;
-                batch.invMassA[lane] = bodies[c.bodyA].invMass;
-                batch.invInertiaA[lane] = bodies[c.bodyA].invInertia;
-                batch.invMassB[lane] = bodies[c.bodyB].invMass;
-                batch.invInertiaB[lane] = bodies[c.bodyB].invInertia;
-                const Vec2 t = tangentOf(c.normal);
-                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-                    const ContactConstraintPoint& p = c.points[i];
-                    BatchPoint& q = batch.points[i];
-                    q.normalArmA[lane] = cross(p.rA, c.normal);
-                    q.normalArmB[lane] = cross(p.rB, c.normal);
-                    q.tangentArmA[lane] = cross(p.rA, t);
-                    q.tangentArmB[lane] = cross(p.rB, t);
-                    q.normalMass[lane] = p.normalMass;
-                    q.tangentMass[lane] = p.tangentMass;
-                    q.normalImpulse[lane] = p.normalImpulse;
-                    q.tangentImpulse[lane] = p.tangentImpulse;
-                    q.gapSpeed[lane] = std::max(p.separation, 0.0) / h;
-                }
-                if (c.pointCount == 2) {
-                    batch.k11[lane] = c.k(0, 0);
-                    batch.k12[lane] = c.k(0, 1);
-                    batch.k22[lane] = c.k(1, 1);
-                    batch.inverse11[lane] = c.normalMassBlock(0, 0);
-                    batch.inverse12[lane] = c.normalMassBlock(0, 1);
-                    batch.inverse22[lane] = c.normalMassBlock(1, 1);
-                    batch.blockSolve[lane] = c.blockSolve ? -1 : 0;
-                } else {
-                    // The second point has no mass and can never close its gap: only the
-                    // "first point alone" and "none" cases can hold, which is the one-point solve.
-                    batch.k11[lane] = c.k(0, 0);
-                    batch.k22[lane] = 1;
-                    batch.points[1].gapSpeed[lane] = kUnreachableGapSpeed;
-                }
+    // Every field of every lane is written, padding included: clearing the batches first would
+    // cost as much again.
+    SolverBody& scratch = m_scratchBodies[g];
+    scratch = SolverBody{};
+    const auto scratchPose = static_cast<std::uint32_t>(bodies.size() + g);
+    for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
+        ContactBatch& batch = m_batches[bi];
+        PositionBatch& positions = m_positionBatches[bi];
+        batch.acted = LaneMask{};
+        for (int lane = 0; lane < kBatchLanes; ++lane) {
+            const auto ul = static_cast<std::size_t>(lane);
+            const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
+            // Padding is a contact without mass or normal between two bodies that cannot move;
+            // it never acts.
+            const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
+            const bool two = c && c->pointCount == 2;
+            const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
+                                  std::array<SolverBody*, kBatchLanes>& write,
+                                  std::array<std::uint32_t, kBatchLanes>& readPose,
+                                  std::array<std::uint32_t, kBatchLanes>& writePose) {
+                const std::uint32_t index = c ? c->*body : 0;
+                const bool moves = c && movable(bodies[index]);
+                read[ul] = c ? &bodies[index] : &scratch;
+                write[ul] = moves ? &bodies[index] : &scratch;
+                readPose[ul] = c ? index : scratchPose;
+                writePose[ul] = moves ? index : scratchPose;
+            };
+            side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
+            side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
+            const SolverBody& a = *batch.bodyA[ul];
+            const SolverBody& b = *batch.bodyB[ul];
+            const Vec2 n = c ? c->normal : Vec2::Zero();
+            const Vec2 t = tangentOf(n);
+            batch.normalX[lane] = n.x();
+            batch.normalY[lane] = n.y();
+            batch.friction[lane] = c ? c->friction : 0;
+            batch.invMassA[lane] = positions.invMassA[lane] = a.invMass;
+            batch.invInertiaA[lane] = positions.invInertiaA[lane] = a.invInertia;
+            batch.invMassB[lane] = positions.invMassB[lane] = b.invMass;
+            batch.invInertiaB[lane] = positions.invInertiaB[lane] = b.invInertia;
+            // A one-point contact's second point has no mass and can never close its gap: only
+            // the "first point alone" and "none" cases can hold, which is the one-point solve.
+            batch.k11[lane] = c ? c->k(0, 0) : 1;
+            batch.k12[lane] = two ? c->k(0, 1) : 0;
+            batch.k22[lane] = two ? c->k(1, 1) : 1;
+            batch.inverse11[lane] = two ? c->normalMassBlock(0, 0) : 0;
+            batch.inverse12[lane] = two ? c->normalMassBlock(0, 1) : 0;
+            batch.inverse22[lane] = two ? c->normalMassBlock(1, 1) : 0;
+            batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
+            const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
+            positions.localNormalX[lane] = localNormal.x();
+            positions.localNormalY[lane] = localNormal.y();
+            positions.secondPoint[lane] = two ? -1 : 0;
+            for (std::size_t i = 0; i < 2; ++i) {
+                const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
+                const ContactConstraintPoint none;
+                const ContactConstraintPoint& q = p ? *p : none;
+                BatchPoint& v = batch.points[i];
+                v.normalArmA[lane] = cross(q.rA, n);
+                v.normalArmB[lane] = cross(q.rB, n);
+                v.tangentArmA[lane] = cross(q.rA, t);
+                v.tangentArmB[lane] = cross(q.rB, t);
+                v.normalMass[lane] = q.normalMass;
+                v.tangentMass[lane] = q.tangentMass;
+                v.normalImpulse[lane] = q.normalImpulse;
+                v.tangentImpulse[lane] = q.tangentImpulse;
+                v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
+                PositionBatch::Anchors& anchors = positions.anchors[i];
+                anchors.ax[lane] = q.localAnchorA.x();
+                anchors.ay[lane] = q.localAnchorA.y();
+                anchors.bx[lane] = q.localAnchorB.x();
+                anchors.by[lane] = q.localAnchorB.y();
             }
         }
     }

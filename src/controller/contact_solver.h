@@ -171,10 +171,12 @@ public:
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
     static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
-    /// prepare() for manifolds [begin, end), into the same slots of m_constraints.
+    /// prepare() for manifolds [begin, end): the non-empty ones' constraints go to m_constraints
+    /// from slot `out` on.
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                           std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
-                          const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end);
+                          const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end,
+                          std::size_t out);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
@@ -182,13 +184,10 @@ private:
     void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
     /// Colours the constraints of each group and lays out the batches' lanes (partition()).
     void colour(std::span<const SolverBody> bodies);
-    /// Fills the batches from the constraints, for this step's velocity passes.
-    void packBatches(std::span<SolverBody> bodies, Scalar h);
-    /// The constraints of group g that the velocity passes solve one at a time.
-    const std::vector<std::uint32_t>& scalarGroup(std::size_t g) const
-    {
-        return m_batched ? m_scalarGroups[g] : m_groups[g];
-    }
+    /// Fills group g's batches from the constraints, for this step's velocity and position passes.
+    void packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g);
+    /// solvePositions() for a batched step.
+    bool solvePositionsInBatches(std::span<SolverBody> bodies, bool turnedElsewhere);
     /// The batches of group g.
     std::span<ContactBatch> batchesOf(std::size_t g)
     {
@@ -243,9 +242,9 @@ private:
     std::vector<ContactBatch> m_batches; ///< group 0's, then group 1's, then group 2's
     std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint
     std::array<std::size_t, 4> m_batchGroupStart{}; ///< where each group's batches start
-    /// Per group: the constraints left over when every colour is taken at one of their bodies,
-    /// solved one at a time after the group's batches.
-    std::array<std::vector<std::uint32_t>, 3> m_scalarGroups;
+    std::vector<PositionBatch> m_positionBatches; ///< the same lanes as m_batches, for the position passes
+    /// Per body, then one scratch pose per group: the poses of a batched step's position passes.
+    std::vector<BatchPose> m_poses;
     std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
     std::vector<std::uint8_t> m_colourOf; ///< per constraint of the group being coloured
     /// Where a lane writes a fixed body's velocity, one per group, each on its own cache line.
