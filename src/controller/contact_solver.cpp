@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace impetus::controller {
 
@@ -95,6 +96,59 @@ Eigen::Vector2d solveTwoPointLcp(const Eigen::Matrix2d& k, const Eigen::Matrix2d
             return Eigen::Vector2d(0, x2);
     }
     return Eigen::Vector2d::Zero();
+}
+
+/// When point p of constraint c meets this step (as a fraction τ of h), and how fast it
+/// approaches then. τ < 0: it does not meet within the step, or it is a resting contact: one
+/// that carried load in the last step is held by contact forces, not struck (otherwise the
+/// small residual sinking of a tall stack would set off a cascade of plastic "impacts").
+struct Approach {
+    Scalar tau = -1;
+    Scalar velocity = 0;
+};
+
+Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
+                    Scalar h)
+{
+    Approach result;
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    // A resting contact stays out of the impact pass until an impact strikes one of its
+    // bodies: then the blow travels on through it (a ball dropped on a ball resting on the
+    // floor bounces back up, as a vertical Newton's cradle does). A plastic one (e = 0) stays
+    // out for good: the contact forces already give a plastic blow its exact outcome, and
+    // passing it on impact by impact through a landing pile costs thousands of impacts.
+    if (p.carriesLoad && (c.restitution == 0 || (!a.hadImpact && !b.hadImpact)))
+        return result;
+    const Scalar threshold = p.carriesLoad ? constants::kRestingImpactThreshold : constants::kRestitutionThreshold;
+    const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
+    if (p.separation <= constants::kTouchDistance) {
+        result.tau = 0;
+    } else {
+        const Scalar t = timeToClose(p.separation, vn, p.normalAcceleration, h);
+        if (t < 0)
+            return result;
+        result.tau = t / h;
+    }
+    result.velocity = vn + p.normalAcceleration * result.tau * h;
+    if (result.velocity >= -threshold)
+        result.tau = -1; // not an impact: too slow for this kind of contact
+    return result;
+}
+
+/// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when none is.
+std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h)
+{
+    Scalar fastest = -constants::kRestitutionThreshold;
+    bool approaching = false;
+    for (int i = 0; i < c.pointCount; ++i) {
+        const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)], bodies, h);
+        if (ap.tau >= 0 && ap.velocity < fastest) {
+            fastest = ap.velocity;
+            approaching = true;
+        }
+    }
+    return approaching ? std::optional<Scalar>(fastest) : std::nullopt;
 }
 
 /// Marks the movable ones of a contact's bodies as held by a contact force.
@@ -227,7 +281,7 @@ Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
 
 void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
-                            std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives)
+                            std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
 {
     // A large world's manifolds are split between two threads. Empty ones (bounding boxes that
     // overlap without contact) make no constraint: counted first, so that each half writes its
@@ -248,25 +302,31 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
             m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
     };
     const std::vector<model::ContactRecord>& previous = world.contacts;
-    const auto build = [&](std::size_t begin, std::size_t end, std::size_t out) {
+    const auto build = [&](std::size_t begin, std::size_t end, std::size_t out, int part) {
+        const auto up = static_cast<std::size_t>(part);
+        m_preparedCandidates[up].clear();
+        m_preparedPoints[up] = 0;
         if (begin < end)
-            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end, out);
+            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end, out, h, up);
     };
     if (split) {
         m_tasks->run([&](int part) {
             part == 0 ? rotationsOf(0, bodies.size() / 2) : rotationsOf(bodies.size() / 2, bodies.size());
         });
-        m_tasks->run([&](int part) { part == 0 ? build(0, half, 0) : build(half, manifolds.size(), firstCount); });
+        m_tasks->run([&](int part) {
+            part == 0 ? build(0, half, 0, 0) : build(half, manifolds.size(), firstCount, 1);
+        });
     } else {
         rotationsOf(0, bodies.size());
-        build(0, manifolds.size(), 0);
+        build(0, manifolds.size(), 0, 0);
+        build(0, 0, 0, 1);
     }
 }
 
 void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                                      std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                                      const std::vector<model::ContactRecord>& previous, std::size_t begin,
-                                     std::size_t end, std::size_t out)
+                                     std::size_t end, std::size_t out, Scalar h, std::size_t part)
 {
     // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
     // range starts.
@@ -367,6 +427,12 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             const ContactConstraintPoint& p1 = c.points[0];
             c.k(0, 0) = p1.normalMass > 0 ? 1 / p1.normalMass : 0;
         }
+
+        // What solveImpacts() starts from, found while the constraint is at hand.
+        const auto index = static_cast<std::uint32_t>(&c - m_constraints.data());
+        m_preparedPoints[part] += static_cast<std::size_t>(c.pointCount);
+        if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
+            m_preparedCandidates[part].push_back({*fastest, index, 0});
     }
 }
 
@@ -374,46 +440,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
-    std::size_t totalPoints = 0;
-    for (const ContactConstraint& c : m_constraints)
-        totalPoints += static_cast<std::size_t>(c.pointCount);
+    const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
-
-    // When point p of constraint c meets this step (as a fraction τ of h), and how fast it
-    // approaches then. τ < 0: it does not meet within the step, or it is a resting contact: one
-    // that carried load in the last step is held by contact forces, not struck (otherwise the
-    // small residual sinking of a tall stack would set off a cascade of plastic "impacts").
-    struct Approach {
-        Scalar tau = -1;
-        Scalar velocity = 0;
-    };
-    const auto approachOf = [&](const ContactConstraint& c, const ContactConstraintPoint& p) {
-        Approach result;
-        const SolverBody& a = bodies[c.bodyA];
-        const SolverBody& b = bodies[c.bodyB];
-        // A resting contact stays out of the impact pass until an impact strikes one of its
-        // bodies: then the blow travels on through it (a ball dropped on a ball resting on the
-        // floor bounces back up, as a vertical Newton's cradle does). A plastic one (e = 0) stays
-        // out for good: the contact forces already give a plastic blow its exact outcome, and
-        // passing it on impact by impact through a landing pile costs thousands of impacts.
-        if (p.carriesLoad && (c.restitution == 0 || (!a.hadImpact && !b.hadImpact)))
-            return result;
-        const Scalar threshold =
-            p.carriesLoad ? constants::kRestingImpactThreshold : constants::kRestitutionThreshold;
-        const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
-        if (p.separation <= constants::kTouchDistance) {
-            result.tau = 0;
-        } else {
-            const Scalar t = timeToClose(p.separation, vn, p.normalAcceleration, h);
-            if (t < 0)
-                return result;
-            result.tau = t / h;
-        }
-        result.velocity = vn + p.normalAcceleration * result.tau * h;
-        if (result.velocity >= -threshold)
-            result.tau = -1; // not an impact: too slow for this kind of contact
-        return result;
-    };
 
     // The fastest approach first: a collision happens before the ones it causes. A heap holds the
     // approaching constraints by their fastest point; an impact changes only its two bodies, so
@@ -426,23 +454,15 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     heap.clear();
     m_versions.assign(m_constraints.size(), 0);
     const auto consider = [&](std::uint32_t ci) {
-        const ContactConstraint& c = m_constraints[ci];
-        Scalar fastest = -constants::kRestitutionThreshold;
-        bool approaching = false;
-        for (int i = 0; i < c.pointCount; ++i) {
-            const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)]);
-            if (ap.tau >= 0 && ap.velocity < fastest) {
-                fastest = ap.velocity;
-                approaching = true;
-            }
-        }
-        if (approaching) {
-            heap.push_back({fastest, ci, m_versions[ci]});
+        if (const std::optional<Scalar> fastest = fastestApproach(m_constraints[ci], bodies, h)) {
+            heap.push_back({*fastest, ci, m_versions[ci]});
             std::push_heap(heap.begin(), heap.end(), later);
         }
     };
-    for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
-        consider(ci);
+    // prepare() found the constraints that approach at the start, while it had them at hand.
+    for (const std::vector<Candidate>& found : m_preparedCandidates)
+        heap.insert(heap.end(), found.begin(), found.end());
+    std::make_heap(heap.begin(), heap.end(), later);
 
     // Which constraints each body takes part in, to find those an impact affects. Built only
     // when some contact approaches: a resting scene, the common case, never needs it.
@@ -494,7 +514,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         for (int i = 0; i < c.pointCount; ++i) {
             const auto ui = static_cast<std::size_t>(i);
             const ContactConstraintPoint& p = c.points[ui];
-            const Approach ap = approachOf(c, p);
+            const Approach ap = approachOf(c, p, bodies, h);
             if (ap.tau < 0)
                 continue;
             const Vec2 centreA = positionAt(c.bodyA, a, ap.tau, h);

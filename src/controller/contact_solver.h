@@ -122,11 +122,12 @@ public:
         std::uint32_t ownerB = 0;
     };
 
-    /// Creates the constraints. `bodies` holds every solver body at the start of the step, and
+    /// Creates the constraints of a step of length h (s). `bodies` holds every solver body at the
+    /// start of the step, and
     /// `derivatives` their smooth-force derivatives, indexed alike (world bodies, then soft-grid
     /// ellipses: force_model.h, stateCount).
     void prepare(const model::World& world, std::span<const PairManifold> manifolds,
-                 std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives);
+                 std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h);
 
     /// Resolves the impacts of this step, in order of approach speed, on `bodies` (which hold the
     /// velocities from before this step's forces). Records each body's impact data. Returns the
@@ -172,11 +173,12 @@ private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
     static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
     /// prepare() for manifolds [begin, end): the non-empty ones' constraints go to m_constraints
-    /// from slot `out` on.
+    /// from slot `out` on; the approaching ones and the point count go to `part` (0 or 1) of
+    /// m_preparedCandidates and m_preparedPoints.
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                           std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                           const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end,
-                          std::size_t out);
+                          std::size_t out, Scalar h, std::size_t part);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
@@ -222,6 +224,10 @@ private:
     std::vector<TimedImpulse> m_impulseTimeline;
     std::vector<std::uint32_t> m_lastTimedImpulse; ///< per body: its latest timeline entry
     std::vector<Candidate> m_candidates; ///< the impact heap
+    /// The constraints approaching at the start of the step, and the number of contact points, as
+    /// prepare() found them in each half of the manifolds.
+    std::array<std::vector<Candidate>, 2> m_preparedCandidates;
+    std::array<std::size_t, 2> m_preparedPoints{};
     std::vector<std::uint32_t> m_versions; ///< per constraint: bumped when it is looked at again
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
