@@ -1,7 +1,7 @@
 // Soft mode's speed goal (issue 5): 10 soft bodies of 1 m², at 256 ellipses per m², falling into a
 // box. Prints the wall time of each 1/60 s frame of simulated time, averaged over the fall, the
 // landing and the settled pile, against the goal of 8 ms per frame.
-// Run: build/bench/bench/impetus-bench-soft [--density N] [--integrator NAME] [--seconds S] [--one-thread]
+// Run: build/bench/bench/impetus-bench-soft [--density N] [--integrator NAME] [--seconds S] [--one-thread] [--no-batches]
 
 #include "controller/simulation.h"
 #include "controller/soft_body_builder.h"
@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,13 +65,17 @@ int main(int argc, char** argv)
     double seconds = 6;
     controller::SolverSettings settings;
     const auto usage = [&] {
-        std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s [--density N] [--integrator NAME] [--seconds S] [--one-thread] [--no-batches]\n", argv[0]);
         return 2;
     };
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "--one-thread") {
             settings.secondThread = false;
+            continue;
+        }
+        if (flag == "--no-batches") {
+            settings.batchMinConstraints = std::numeric_limits<std::size_t>::max();
             continue;
         }
         // Every other flag takes a value.
