@@ -17,7 +17,7 @@ struct LaneVelocities {
 // Loading and storing go lane by lane: the bodies lie anywhere in memory. No two lanes of a batch
 // share a movable body, so the stores never overwrite one another. (Loading whole 256-bit rows and
 // transposing them was tried and was slower.)
-inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bodies)
+[[gnu::always_inline]] inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bodies)
 {
     LaneVelocities v;
     for (int lane = 0; lane < kBatchLanes; ++lane) {
@@ -29,7 +29,7 @@ inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bod
     return v;
 }
 
-inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const LaneVelocities& v)
+[[gnu::always_inline]] inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const LaneVelocities& v)
 {
     for (int lane = 0; lane < kBatchLanes; ++lane) {
         SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
@@ -38,14 +38,14 @@ inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const Lane
     }
 }
 
-inline Lanes select(const LaneMask& condition, const Lanes& ifTrue, const Lanes& ifFalse)
+[[gnu::always_inline]] inline Lanes select(const LaneMask& condition, const Lanes& ifTrue, const Lanes& ifFalse)
 {
     return condition ? ifTrue : ifFalse;
 }
 
 /// The impulse λ along the unit direction (dx, dy), with arms rA × d and rB × d: −λd on A and +λd
 /// on B, as applyImpulse does for one contact.
-inline void apply(const ContactBatch& c, LaneVelocities& a, LaneVelocities& b, const Lanes& impulse,
+[[gnu::always_inline]] inline void apply(const ContactBatch& c, LaneVelocities& a, LaneVelocities& b, const Lanes& impulse,
                   const Lanes& dx, const Lanes& dy, const Lanes& armA, const Lanes& armB)
 {
     const Lanes px = impulse * dx;
@@ -59,7 +59,7 @@ inline void apply(const ContactBatch& c, LaneVelocities& a, LaneVelocities& b, c
 }
 
 /// The relative velocity of B's point to A's along (dx, dy): (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
-inline Lanes relativeAlong(const LaneVelocities& a, const LaneVelocities& b, const Lanes& dx, const Lanes& dy,
+[[gnu::always_inline]] inline Lanes relativeAlong(const LaneVelocities& a, const LaneVelocities& b, const Lanes& dx, const Lanes& dy,
                            const Lanes& armA, const Lanes& armB)
 {
     return (b.x - a.x) * dx + (b.y - a.y) * dy + b.angular * armB - a.angular * armA;
@@ -74,7 +74,7 @@ struct LanePoses {
     Lanes sine{};
 };
 
-inline LanePoses loadPoses(const std::array<std::uint32_t, kBatchLanes>& indices, std::span<const BatchPose> poses)
+[[gnu::always_inline]] inline LanePoses loadPoses(const std::array<std::uint32_t, kBatchLanes>& indices, std::span<const BatchPose> poses)
 {
     LanePoses p;
     for (int lane = 0; lane < kBatchLanes; ++lane) {
@@ -88,7 +88,7 @@ inline LanePoses loadPoses(const std::array<std::uint32_t, kBatchLanes>& indices
     return p;
 }
 
-inline void storePoses(const std::array<std::uint32_t, kBatchLanes>& indices, const LanePoses& p,
+[[gnu::always_inline]] inline void storePoses(const std::array<std::uint32_t, kBatchLanes>& indices, const LanePoses& p,
                        std::span<BatchPose> poses)
 {
     for (int lane = 0; lane < kBatchLanes; ++lane) {
@@ -107,7 +107,7 @@ inline void storePoses(const std::array<std::uint32_t, kBatchLanes>& indices, co
 constexpr Scalar kSmallTurn = 0.05;
 
 /// Turns the poses by δ, keeping their cosine and sine up to date.
-inline void turn(LanePoses& p, const Lanes& delta)
+[[gnu::always_inline]] inline void turn(LanePoses& p, const Lanes& delta)
 {
     p.angle += delta;
     const Lanes d2 = delta * delta;
@@ -126,6 +126,10 @@ inline void turn(LanePoses& p, const Lanes& delta)
 }
 
 } // namespace
+
+// Every helper above is always inlined, so each version of a pass below is one function for one
+// target: GCC miscompiles calls from an AVX2 function to a plain one that take vector arguments at
+// -O0 (AddressSanitizer caught it reading past a local).
 
 // Two versions of each pass are compiled: one for processors with AVX2, whose 256-bit registers
 // hold a whole batch, and one for any x86-64. The processor picks at load time. Both do the same
