@@ -149,10 +149,16 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         Scalar* __restrict y = scratch.y.data();
         Scalar* __restrict vx = scratch.vx.data();
         Scalar* __restrict vy = scratch.vy.data();
-        std::fill_n(x, slots, 0.0);
-        std::fill_n(y, slots, 0.0);
-        std::fill_n(vx, slots, 0.0);
-        std::fill_n(vy, slots, 0.0);
+        // Zeros around the lattice and in its empty cells; a full lattice (a box) needs them only
+        // around it.
+        for (Scalar* v : {x, y, vx, vy}) {
+            if (count == cells) {
+                std::fill_n(v, pad, 0.0);
+                std::fill_n(v + pad + cells, pad, 0.0);
+            } else {
+                std::fill_n(v, slots, 0.0);
+            }
+        }
         // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
         // ellipses about it) for the internal damping, which acts on what is left over. Sums of
         // the even and the odd ellipses apart, so that two additions are under way at a time.
