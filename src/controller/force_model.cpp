@@ -16,142 +16,233 @@ Vec2 velocityOf(const model::BodyState& state, const Vec2& worldPoint)
     return state.velocity + cross(state.angularVelocity, Vec2(worldPoint - state.position));
 }
 
-/// The grid springs' accelerations on the ellipses of one grid (states s, derivatives d), every
-/// ellipse of mass 1/invMass. Two springs at a time in the two lanes of an Eigen::Array2d, so that
-/// the square roots and divisions run packed; the sums then go to the ends one by one.
-void addGridSpringForces(const model::SoftGrid& grid, const model::BodyState* s, BodyDerivative* d, Scalar invMass)
+using Lanes = Eigen::Array2d;
+
+/// The accelerations of one direction's grid springs on their `a` ends, into fx and fy at each
+/// spring's slot (the `b` end feels the opposite). Positions and velocities are per lattice slot:
+/// slot pad + c holds cell c, and the slots around the lattice hold zeros, so a spring that is not
+/// there (all its values 0) pulls with exactly 0, and so does one whose ends meet (its (dx, dy) is
+/// 0 and its length is held at kSoftMinSpringLength, so no branch is needed). Two springs at a
+/// time in the two lanes of an Eigen::Array2d, so that the square roots and divisions run packed.
+void springField(const model::SoftGrid& grid, const model::SoftSpringField& field, const ForceScratch& in,
+                 std::size_t pad, Scalar invMass, Scalar* __restrict fx, Scalar* __restrict fy)
 {
-    using Lanes = Eigen::Array2d;
-    const std::vector<model::SoftSpring>& springs = grid.springs;
-    const std::size_t count = springs.size();
-    // Springs come grouped by their first ellipse (buildSoftGrid): its acceleration is summed in
-    // locals and stored once per group, instead of through memory once per spring.
-    std::uint32_t current = count == 0 ? 0 : springs.front().a;
-    Scalar sumX = 0;
-    Scalar sumY = 0;
-    // Component by component: a Vec2 built from two computed scalars goes through the stack
-    // and stalls the load that reads it back.
-    const auto apply = [&](const model::SoftSpring& spring, Scalar ax, Scalar ay) {
-        if (spring.a != current) {
-            d[current].acceleration.x() += sumX;
-            d[current].acceleration.y() += sumY;
-            sumX = 0;
-            sumY = 0;
-            current = spring.a;
-        }
-        sumX += ax;
-        sumY += ay;
-        d[spring.b].acceleration.x() -= ax;
-        d[spring.b].acceleration.y() -= ay;
-    };
-    std::size_t k = 0;
-    for (; k + 1 < count; k += 2) {
-        const model::SoftSpring& p = springs[k];
-        const model::SoftSpring& q = springs[k + 1];
-        const model::BodyState& pa = s[p.a];
-        const model::BodyState& pb = s[p.b];
-        const model::BodyState& qa = s[q.a];
-        const model::BodyState& qb = s[q.b];
-        const Lanes dx(pb.position.x() - pa.position.x(), qb.position.x() - qa.position.x());
-        const Lanes dy(pb.position.y() - pa.position.y(), qb.position.y() - qa.position.y());
-        const Lanes dvx(pb.velocity.x() - pa.velocity.x(), qb.velocity.x() - qa.velocity.x());
-        const Lanes dvy(pb.velocity.y() - pa.velocity.y(), qb.velocity.y() - qa.velocity.y());
-        const Lanes length = (dx * dx + dy * dy).sqrt();
+    const auto end = static_cast<std::size_t>(field.end);
+    const Scalar* __restrict xa = in.x.data() + pad;
+    const Scalar* __restrict ya = in.y.data() + pad;
+    const Scalar* __restrict vxa = in.vx.data() + pad;
+    const Scalar* __restrict vya = in.vy.data() + pad;
+    const auto step = static_cast<std::ptrdiff_t>(field.step);
+    const Scalar* __restrict xb = xa + step;
+    const Scalar* __restrict yb = ya + step;
+    const Scalar* __restrict vxb = vxa + step;
+    const Scalar* __restrict vyb = vya + step;
+    const Scalar* __restrict stiffness = field.stiffness.data();
+    const Scalar* __restrict damping = field.damping.data();
+    const Scalar* __restrict rest = field.restLength.data();
+    fx += pad;
+    fy += pad;
+    // Outside [begin, end) there is no spring: its pull is 0.
+    std::fill(fx, fx + field.begin, 0.0);
+    std::fill(fy, fy + field.begin, 0.0);
+    std::fill(fx + field.end, fx + grid.columns * grid.rows, 0.0);
+    std::fill(fy + field.end, fy + grid.columns * grid.rows, 0.0);
+    auto c = static_cast<std::size_t>(field.begin);
+    for (; c + 1 < end; c += 2) {
+        const Lanes dx = Lanes::Map(xb + c) - Lanes::Map(xa + c);
+        const Lanes dy = Lanes::Map(yb + c) - Lanes::Map(ya + c);
+        const Lanes dvx = Lanes::Map(vxb + c) - Lanes::Map(vxa + c);
+        const Lanes dvy = Lanes::Map(vyb + c) - Lanes::Map(vya + c);
+        const Lanes length = (dx * dx + dy * dy).sqrt().max(Lanes::Constant(constants::kSoftMinSpringLength));
         const Lanes invLength = length.inverse();
-        // T = k·(L − L₀) + c·dL/dt, and the acceleration T/m along (dx, dy)/L. Two ends on one
-        // point have no line to pull along: no force (the select drops the NaN of 0·∞).
-        const Lanes tension = Lanes(p.stiffness, q.stiffness) * (length - Lanes(p.restLength, q.restLength)) +
-                              Lanes(p.damping, q.damping) * (invLength * (dx * dvx + dy * dvy));
-        const Lanes scale = (length > 0).select(tension * invMass * invLength, Lanes::Zero());
-        apply(p, scale(0) * dx(0), scale(0) * dy(0));
-        apply(q, scale(1) * dx(1), scale(1) * dy(1));
+        // T = k·(L − L₀) + c·dL/dt, and the acceleration T/m along (dx, dy)/L.
+        const Lanes tension = Lanes::Map(stiffness + c) * (length - Lanes::Map(rest + c)) +
+                              Lanes::Map(damping + c) * (invLength * (dx * dvx + dy * dvy));
+        const Lanes scale = tension * invMass * invLength;
+        Lanes::Map(fx + c) = scale * dx;
+        Lanes::Map(fy + c) = scale * dy;
     }
-    for (; k < count; ++k) {
-        const model::SoftSpring& p = springs[k];
-        const Vec2 delta = s[p.b].position - s[p.a].position;
-        const Scalar length = delta.norm();
-        if (!(length > 0))
-            continue;
-        const Scalar lengthRate = delta.dot(s[p.b].velocity - s[p.a].velocity) / length;
-        const Scalar tension = p.stiffness * (length - p.restLength) + p.damping * lengthRate;
-        const Scalar scale = tension * invMass / length;
-        apply(p, scale * delta.x(), scale * delta.y());
+    for (; c < end; ++c) {
+        const Scalar dx = xb[c] - xa[c];
+        const Scalar dy = yb[c] - ya[c];
+        const Scalar length = std::max(std::sqrt(dx * dx + dy * dy), constants::kSoftMinSpringLength);
+        const Scalar invLength = 1 / length;
+        const Scalar tension = stiffness[c] * (length - rest[c]) +
+                               damping[c] * (invLength * (dx * (vxb[c] - vxa[c]) + dy * (vyb[c] - vya[c])));
+        const Scalar scale = tension * invMass * invLength;
+        fx[c] = scale * dx;
+        fy[c] = scale * dy;
     }
-    if (count > 0) {
-        d[current].acceleration.x() += sumX;
-        d[current].acceleration.y() += sumY;
+}
+
+/// The grid springs' accelerations on every cell of the lattice, into scratch.ax and ay (per
+/// cell), from the positions and velocities already in the scratch's slots (see springField). Each
+/// direction's springs are computed whole first; a cell then adds the springs that start there
+/// and subtracts those that end there, so that no spring's result is stored and reloaded at once.
+void addGridSpringForces(const model::SoftGrid& grid, ForceScratch& scratch, std::size_t pad, Scalar invMass)
+{
+    for (std::size_t f = 0; f < grid.springFields.size(); ++f) {
+        std::fill_n(scratch.fx[f].begin(), pad, 0.0);
+        std::fill_n(scratch.fy[f].begin(), pad, 0.0);
+        springField(grid, grid.springFields[f], scratch, pad, invMass, scratch.fx[f].data(), scratch.fy[f].data());
+    }
+    const auto cells = static_cast<std::size_t>(grid.columns * grid.rows);
+    const auto step = [&](std::size_t f) { return static_cast<std::ptrdiff_t>(grid.springFields[f].step); };
+    const Scalar* __restrict fx0 = scratch.fx[0].data() + pad;
+    const Scalar* __restrict fx1 = scratch.fx[1].data() + pad;
+    const Scalar* __restrict fx2 = scratch.fx[2].data() + pad;
+    const Scalar* __restrict fx3 = scratch.fx[3].data() + pad;
+    const Scalar* __restrict fy0 = scratch.fy[0].data() + pad;
+    const Scalar* __restrict fy1 = scratch.fy[1].data() + pad;
+    const Scalar* __restrict fy2 = scratch.fy[2].data() + pad;
+    const Scalar* __restrict fy3 = scratch.fy[3].data() + pad;
+    const Scalar* __restrict ex0 = fx0 - step(0);
+    const Scalar* __restrict ex1 = fx1 - step(1);
+    const Scalar* __restrict ex2 = fx2 - step(2);
+    const Scalar* __restrict ex3 = fx3 - step(3);
+    const Scalar* __restrict ey0 = fy0 - step(0);
+    const Scalar* __restrict ey1 = fy1 - step(1);
+    const Scalar* __restrict ey2 = fy2 - step(2);
+    const Scalar* __restrict ey3 = fy3 - step(3);
+    Scalar* __restrict ax = scratch.ax.data();
+    Scalar* __restrict ay = scratch.ay.data();
+    const auto sum = [](const Scalar* f0, const Scalar* e0, const Scalar* f1, const Scalar* e1, const Scalar* f2,
+                        const Scalar* e2, const Scalar* f3, const Scalar* e3, std::size_t c) {
+        return ((Lanes::Map(f0 + c) - Lanes::Map(e0 + c)) + (Lanes::Map(f1 + c) - Lanes::Map(e1 + c))) +
+               ((Lanes::Map(f2 + c) - Lanes::Map(e2 + c)) + (Lanes::Map(f3 + c) - Lanes::Map(e3 + c)));
+    };
+    std::size_t c = 0;
+    for (; c + 1 < cells; c += 2) {
+        Lanes::Map(ax + c) = sum(fx0, ex0, fx1, ex1, fx2, ex2, fx3, ex3, c);
+        Lanes::Map(ay + c) = sum(fy0, ey0, fy1, ey1, fy2, ey2, fy3, ey3, c);
+    }
+    for (; c < cells; ++c) {
+        ax[c] = ((fx0[c] - ex0[c]) + (fx1[c] - ex1[c])) + ((fx2[c] - ex2[c]) + (fx3[c] - ex3[c]));
+        ay[c] = ((fy0[c] - ey0[c]) + (fy1[c] - ey1[c])) + ((fy2[c] - ey2[c]) + (fy3[c] - ey3[c]));
     }
 }
 
 /// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of every
 /// soft grid: writes every field of their entries in `out`, with the accelerations (every ellipse
-/// of a grid has the same mass, so forces are divided by it up front).
+/// of a grid has the same mass, so forces are divided by it up front). The grid's coordinates are
+/// copied into `scratch`, one array per component laid out on the lattice, for the springs.
 void addSoftGridForces(const model::World& world, std::span<const model::BodyState> states,
-                       std::vector<BodyDerivative>& out)
+                       std::vector<BodyDerivative>& out, ForceScratch& scratch)
 {
     std::size_t offset = world.bodies.size();
     for (const model::SoftGrid& grid : world.softBodies) {
         const model::Body& body = world.bodies[grid.body.index];
+        const std::size_t count = grid.size();
+        const auto cells = static_cast<std::size_t>(grid.columns * grid.rows);
+        // Slots before and after the lattice, so that every spring's far end and every cell's
+        // nearest spring start lie inside the arrays.
+        const auto pad = static_cast<std::size_t>(grid.columns + 1);
+        const std::size_t slots = cells + 2 * pad;
         const Scalar invMass = 1 / grid.ellipseMass;
         const Vec2 gravity = world.settings.gravity;
         // Each ellipse's share of the body's drag coefficient, b·m/M, over its mass m.
         const Scalar drag = world.settings.drag * body.invMass;
         const model::BodyState* s = states.data() + offset;
         BodyDerivative* d = out.data() + offset;
+        scratch.resize(slots);
+        Scalar* __restrict x = scratch.x.data();
+        Scalar* __restrict y = scratch.y.data();
+        Scalar* __restrict vx = scratch.vx.data();
+        Scalar* __restrict vy = scratch.vy.data();
+        // Zeros around the lattice and in its empty cells; a full lattice (a box) needs them only
+        // around it.
+        for (Scalar* v : {x, y, vx, vy}) {
+            if (count == cells) {
+                std::fill_n(v, pad, 0.0);
+                std::fill_n(v + pad + cells, pad, 0.0);
+            } else {
+                std::fill_n(v, slots, 0.0);
+            }
+        }
         // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
-        // ellipses about it) for the internal damping, which acts on what is left over.
-        Vec2 centre = Vec2::Zero();
-        Vec2 velocity = Vec2::Zero();
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            centre += s[i].position;
-            velocity += s[i].velocity;
+        // ellipses about it) for the internal damping, which acts on what is left over. Sums of
+        // the even and the odd ellipses apart, so that two additions are under way at a time.
+        Vec2 centreEven = Vec2::Zero();
+        Vec2 centreOdd = Vec2::Zero();
+        Vec2 velocityEven = Vec2::Zero();
+        Vec2 velocityOdd = Vec2::Zero();
+        const std::int32_t* __restrict cellOf = grid.ellipseCell.data();
+        const auto place = [&](std::size_t i) {
+            const std::size_t slot = pad + static_cast<std::size_t>(cellOf[i]);
+            x[slot] = s[i].position.x();
+            y[slot] = s[i].position.y();
+            vx[slot] = s[i].velocity.x();
+            vy[slot] = s[i].velocity.y();
+        };
+        std::size_t i = 0;
+        for (; i + 1 < count; i += 2) {
+            place(i);
+            place(i + 1);
+            centreEven += s[i].position;
+            centreOdd += s[i + 1].position;
+            velocityEven += s[i].velocity;
+            velocityOdd += s[i + 1].velocity;
         }
-        centre /= static_cast<Scalar>(grid.size());
-        velocity /= static_cast<Scalar>(grid.size());
-        Scalar spin = 0;
-        Scalar spread = 0;
-        Scalar dot = 0;
-        Scalar turn = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const Vec2 r = s[i].position - centre;
-            spin += cross(r, Vec2(s[i].velocity - velocity));
-            spread += r.squaredNorm();
-            dot += grid.restPositions[i].dot(r);
-            turn += cross(grid.restPositions[i], r);
+        if (i < count) {
+            place(i);
+            centreEven += s[i].position;
+            velocityEven += s[i].velocity;
         }
-        const Scalar omega = spread > 0 ? spin / spread : 0;
-        const Scalar internal = constants::kSoftInternalDampingRate;
+        const auto n = static_cast<Scalar>(count);
+        const Vec2 centre = (centreEven + centreOdd) / n;
+        const Vec2 velocity = (velocityEven + velocityOdd) / n;
+        // Σ p × (v − v_c), Σ |p|², Σ r · p and Σ r × p, with p = x − c and r the rest position,
+        // again even and odd apart.
+        Eigen::Array4d sumsEven = Eigen::Array4d::Zero();
+        Eigen::Array4d sumsOdd = Eigen::Array4d::Zero();
+        const auto sums = [&](std::size_t k) {
+            const Vec2 p = s[k].position - centre;
+            const Vec2 q = s[k].velocity - velocity;
+            const Vec2& r = grid.restPositions[k];
+            return Eigen::Array4d(cross(p, q), p.squaredNorm(), r.dot(p), cross(r, p));
+        };
+        for (i = 0; i + 1 < count; i += 2) {
+            sumsEven += sums(i);
+            sumsOdd += sums(i + 1);
+        }
+        if (i < count)
+            sumsEven += sums(i);
+        const Eigen::Array4d total = sumsEven + sumsOdd;
+        const Scalar omega = total(1) > 0 ? total(0) / total(1) : 0;
         // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
         // of the rest lattice puts it (see softShapeMatchingStiffness).
-        const Scalar norm = std::hypot(dot, turn);
-        const Scalar c = norm > 0 ? dot / norm : 1;
-        const Scalar sn = norm > 0 ? turn / norm : 0;
+        const Scalar norm = std::hypot(total(2), total(3));
+        const Scalar c = norm > 0 ? total(2) / norm : 1;
+        const Scalar sn = norm > 0 ? total(3) / norm : 0;
         const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
         // Shape matching is damped in the same proportion as the grid springs (c/k), so the
         // body's own damping setting governs how much of a landing it gives back.
-        const Scalar matchingDamping = softShapeMatchingDamping(grid, body) * invMass;
-        // Written with scalars: see addGridSpringForces.
-        for (std::size_t i = 0; i < grid.size(); ++i) {
+        const Scalar relative = constants::kSoftInternalDampingRate + softShapeMatchingDamping(grid, body) * invMass;
+
+        addGridSpringForces(grid, scratch, pad, invMass);
+        const Scalar* __restrict ax = scratch.ax.data();
+        const Scalar* __restrict ay = scratch.ay.data();
+        // Component by component: a Vec2 built from two computed scalars goes through the stack
+        // and stalls the load that reads it back.
+        for (i = 0; i < count; ++i) {
             const Scalar px = s[i].position.x() - centre.x();
             const Scalar py = s[i].position.y() - centre.y();
-            const Scalar vx = s[i].velocity.x();
-            const Scalar vy = s[i].velocity.y();
+            const Scalar vxi = s[i].velocity.x();
+            const Scalar vyi = s[i].velocity.y();
             const Vec2& r = grid.restPositions[i];
+            const auto cell = static_cast<std::size_t>(cellOf[i]);
             // v − v_rigid, with v_rigid = v_c + ω × p; and x − g, with g = c + R·r.
-            const Scalar relativeX = vx - (velocity.x() - omega * py);
-            const Scalar relativeY = vy - (velocity.y() + omega * px);
+            const Scalar relativeX = vxi - (velocity.x() - omega * py);
+            const Scalar relativeY = vyi - (velocity.y() + omega * px);
             const Scalar offX = px - (c * r.x() - sn * r.y());
             const Scalar offY = py - (sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
             d[i].angularVelocity = 0;
-            d[i].acceleration.x() =
-                gravity.x() - drag * vx - (internal + matchingDamping) * relativeX - matching * offX;
-            d[i].acceleration.y() =
-                gravity.y() - drag * vy - (internal + matchingDamping) * relativeY - matching * offY;
+            d[i].acceleration.x() = gravity.x() - drag * vxi - relative * relativeX - matching * offX + ax[cell];
+            d[i].acceleration.y() = gravity.y() - drag * vyi - relative * relativeY - matching * offY + ay[cell];
             d[i].angularAcceleration = 0;
         }
-        addGridSpringForces(grid, s, d, invMass);
-        offset += grid.size();
+        offset += count;
     }
 }
 
@@ -241,8 +332,28 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
     return {endA, b.position + rotate(spring.anchorB, b.angle)};
 }
 
+void ForceScratch::resize(std::size_t slots)
+{
+    // Only ever grows, so a run of evaluations allocates on its first one alone.
+    if (x.size() >= slots)
+        return;
+    for (std::vector<Scalar>* v : {&x, &y, &vx, &vy, &ax, &ay})
+        v->resize(slots);
+    for (std::size_t f = 0; f < fx.size(); ++f) {
+        fx[f].resize(slots);
+        fy[f].resize(slots);
+    }
+}
+
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
                         std::vector<BodyDerivative>& out)
+{
+    ForceScratch scratch;
+    computeDerivatives(world, states, out, scratch);
+}
+
+void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
+                        std::vector<BodyDerivative>& out, ForceScratch& scratch)
 {
     const std::size_t n = world.bodies.size();
     // The bodies' entries start from zero; the ellipses' are written whole by addSoftGridForces.
@@ -265,7 +376,7 @@ void computeDerivatives(const model::World& world, std::span<const model::BodySt
     // A soft body's own entry stands still: its grid carries its motion.
     for (const model::SoftGrid& grid : world.softBodies)
         out[grid.body.index] = BodyDerivative{};
-    addSoftGridForces(world, states, out);
+    addSoftGridForces(world, states, out, scratch);
 
     // Scene springs see a soft body as its grid's aggregate.
     std::vector<SoftAggregate> aggregates;

@@ -6,6 +6,7 @@
 #include "model/scalar.h"
 #include "model/world.h"
 
+#include <array>
 #include <span>
 #include <utility>
 #include <vector>
@@ -18,6 +19,18 @@ struct BodyDerivative {
     Scalar angularVelocity = 0; ///< θ̇, rad/s
     Vec2 acceleration = Vec2::Zero(); ///< v̇ = F/m, m/s²
     Scalar angularAcceleration = 0; ///< ω̇ = τ/I, rad/s²
+};
+
+/// Working arrays of computeDerivatives for one soft grid at a time: its coordinates, one array
+/// per component laid out on the grid's lattice (with empty slots around it), the accelerations of
+/// its springs of each direction, and their sum per cell. A caller that evaluates many times keeps
+/// one, so that an evaluation allocates nothing.
+struct ForceScratch {
+    std::vector<Scalar> x, y, vx, vy; ///< per lattice slot: positions (m) and velocities (m/s)
+    std::array<std::vector<Scalar>, 4> fx, fy; ///< per direction and slot: a spring's pull, m/s²
+    std::vector<Scalar> ax, ay; ///< per cell: the springs' acceleration, m/s²
+    /// Makes every array at least `slots` long (never shrinks).
+    void resize(std::size_t slots);
 };
 
 /// The length of the world's state list: one entry per body (World::bodies order), then one per
@@ -52,5 +65,10 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 /// `states` must have stateCount(world) entries; `out` is resized to the same.
 void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
                         std::vector<BodyDerivative>& out);
+
+/// The same, with the caller's working arrays: allocates nothing once `scratch` has grown to the
+/// world's largest grid.
+void computeDerivatives(const model::World& world, std::span<const model::BodyState> states,
+                        std::vector<BodyDerivative>& out, ForceScratch& scratch);
 
 } // namespace impetus::controller

@@ -72,6 +72,7 @@ public:
 private:
     std::vector<model::BodyState> m_stage;
     std::vector<BodyDerivative> m_k2, m_k3, m_k4;
+    ForceScratch m_scratch;
 };
 
 /// A new integrator of the given kind.

@@ -25,11 +25,11 @@ void Rk4Integrator::step(const model::World& world, std::span<const model::BodyS
     // The four stages of the classical method, each over the whole world so that coupled bodies
     // see each other's intermediate states.
     advance(start, k1s, h / 2, m_stage);
-    computeDerivatives(world, m_stage, m_k2);
+    computeDerivatives(world, m_stage, m_k2, m_scratch);
     advance(start, m_k2, h / 2, m_stage);
-    computeDerivatives(world, m_stage, m_k3);
+    computeDerivatives(world, m_stage, m_k3, m_scratch);
     advance(start, m_k3, h, m_stage);
-    computeDerivatives(world, m_stage, m_k4);
+    computeDerivatives(world, m_stage, m_k4, m_scratch);
 
     const Scalar w = h / 6;
     end.resize(start.size());

@@ -331,7 +331,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // Phase 0: the start of the step, as the solvers see it.
     gatherStates(world, m_startStates);
     setUpSolverBodies(world);
-    computeDerivatives(world, m_startStates, m_startDerivatives);
+    computeDerivatives(world, m_startStates, m_startDerivatives, m_forceScratch);
 
     // Phase 1: collision detection at the start-of-step poses, with speculative margins.
     collide(world, h);

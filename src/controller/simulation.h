@@ -104,6 +104,7 @@ private:
     std::vector<model::BodyState> m_startStates;
     std::vector<model::BodyState> m_endStates;
     std::vector<BodyDerivative> m_startDerivatives;
+    ForceScratch m_forceScratch; ///< computeDerivatives' working arrays
     std::vector<SolverBody> m_bodies; ///< one per state-list entry (bodies, then soft ellipses)
     std::vector<Entry> m_entries;
     /// Per soft grid: its aggregate pose and velocity as the joint solver was handed it.

@@ -107,6 +107,40 @@ void computeRates(model::SoftGrid& grid)
     grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
+/// The lattice directions of the springs (column step, row step), in SoftGrid::springFields order.
+constexpr std::array<std::array<int, 2>, 4> kSpringDirections{{{1, 0}, {0, 1}, {1, 1}, {-1, 1}}};
+
+/// Fills grid.springFields from grid.springs.
+void buildSpringFields(model::SoftGrid& grid)
+{
+    const auto cells = static_cast<std::size_t>(grid.columns * grid.rows);
+    for (std::size_t f = 0; f < kSpringDirections.size(); ++f) {
+        model::SoftSpringField& field = grid.springFields[f];
+        field.step = kSpringDirections[f][0] + kSpringDirections[f][1] * grid.columns;
+        field.stiffness.assign(cells, 0);
+        field.damping.assign(cells, 0);
+        field.restLength.assign(cells, 0);
+        field.begin = static_cast<std::int32_t>(cells);
+        field.end = 0;
+    }
+    for (const model::SoftSpring& s : grid.springs) {
+        const int a = grid.ellipseCell[s.a];
+        const int b = grid.ellipseCell[s.b];
+        const std::array<int, 2> along{b % grid.columns - a % grid.columns, b / grid.columns - a / grid.columns};
+        const auto f = static_cast<std::size_t>(
+            std::find(kSpringDirections.begin(), kSpringDirections.end(), along) - kSpringDirections.begin());
+        model::SoftSpringField& field = grid.springFields[f];
+        const auto cell = static_cast<std::size_t>(a);
+        field.stiffness[cell] = s.stiffness;
+        field.damping[cell] = s.damping;
+        field.restLength[cell] = s.restLength;
+        field.begin = std::min(field.begin, a);
+        field.end = std::max(field.end, a + 1);
+    }
+    for (model::SoftSpringField& field : grid.springFields)
+        field.begin = std::min(field.begin, field.end);
+}
+
 /// Whether `grid` still describes `body` (same shape, mass and soft settings).
 bool matches(const model::SoftGrid& grid, const model::Body& body)
 {
@@ -183,8 +217,7 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
         const int cell = grid.ellipseCell[i];
         const int column = cell % grid.columns;
         const int row = cell / grid.columns;
-        const std::array<std::array<int, 3>, 4> neighbours{{{1, 0, 0}, {0, 1, 0}, {1, 1, 1}, {-1, 1, 1}}};
-        for (const auto& [dc, dr, diagonal] : neighbours) {
+        for (const auto& [dc, dr] : kSpringDirections) {
             const std::int32_t j = grid.ellipseAt(column + dc, row + dr);
             if (j < 0)
                 continue;
@@ -194,10 +227,11 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
             spring.restLength = (centres[static_cast<std::size_t>(j)] - centres[i]).norm();
             spring.stiffness = soft.stiffness;
             spring.damping = soft.damping;
-            spring.diagonal = diagonal != 0;
+            spring.diagonal = dc != 0 && dr != 0;
             grid.springs.push_back(spring);
         }
     }
+    buildSpringFields(grid);
     computeRates(grid);
     placeSoftGrid(grid, body.state);
     return grid;

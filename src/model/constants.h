@@ -223,6 +223,12 @@ inline constexpr Scalar kSoftInternalDampingRate = 5.0;
 /// 500 N/m box from folding under 20 kg and adds only ~10% to a 2000 N/m box's stiffness.
 inline constexpr Scalar kSoftShapeMatching = 10.0;
 
+/// Soft-grid springs shorter than this, m, pull as if they were this long (their direction is
+/// still the ends' own). It keeps 1/L finite, so that a spring whose two ends meet exactly pulls
+/// with 0 (its (dx, dy) is 0) without a branch in the force loop. A picometre is ten orders of
+/// magnitude below a cell (≥ 1 mm): no grid that still has a shape comes near it.
+inline constexpr Scalar kSoftMinSpringLength = 1e-12;
+
 /// Points on the outline of a round soft body (circle, ellipse) mapped through its grid.
 inline constexpr int kSoftRoundOutlinePoints = 64;
 

@@ -8,6 +8,7 @@
 #include "model/scalar.h"
 #include "model/shape.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +24,23 @@ struct SoftSpring {
     Scalar damping = 0; ///< c, N·s/m
     bool diagonal = false; ///< a shear spring (to a diagonal neighbour), else structural
     bool operator==(const SoftSpring&) const = default;
+};
+
+/// The grid springs of one lattice direction laid out over the lattice's cells, for the force
+/// loop (controller/force_model): the spring that starts in cell c joins the ellipses of cells c
+/// and c + step. A cell where no spring of this direction starts has all three values 0. With
+/// this layout the force loop reads both ends of every spring from consecutive memory.
+struct SoftSpringField {
+    /// Cell index of a spring's `b` end minus that of its `a` end: 1 (right), columns (up),
+    /// columns + 1 (up-right) or columns − 1 (up-left).
+    std::int32_t step = 0;
+    /// The cells [begin, end) hold every spring of this direction (outside it there is none).
+    std::int32_t begin = 0;
+    std::int32_t end = 0; ///< see begin
+    std::vector<Scalar> stiffness; ///< per cell (columns × rows, row-major): k, N/m
+    std::vector<Scalar> damping; ///< per cell: c, N·s/m
+    std::vector<Scalar> restLength; ///< per cell: L₀, m
+    bool operator==(const SoftSpringField&) const = default;
 };
 
 /// The grid of one soft body. Ellipse i sits in cell cells[i] = (column, row) of a columns × rows
@@ -57,6 +75,8 @@ struct SoftGrid {
     std::vector<std::int32_t> ellipseCell; ///< per ellipse: its cell, row·columns + column
     std::vector<Vec2> restPositions; ///< ellipse centres relative to restCentre, body frame, m
     std::vector<SoftSpring> springs;
+    /// The same springs by direction (right, up, up-right, up-left), laid out on the lattice.
+    std::array<SoftSpringField, 4> springFields;
 
     // Runtime state.
     std::vector<Vec2> positions; ///< ellipse centres, world, m

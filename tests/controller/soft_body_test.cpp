@@ -322,6 +322,52 @@ TEST(SoftBody, EnergyFallsUnderDamping)
     EXPECT_NEAR((world.bodies[0].state.position - Vec2(1, 1)).norm(), 0, 1e-12);
 }
 
+TEST(SoftBody, InternalForcesKeepMomentumAndAngularMomentum)
+{
+    // No gravity, no contact: a soft body spinning, moving and wobbling (every ellipse kicked
+    // differently, the grid stretched). Its internal forces (springs, internal damping, shape
+    // matching and its damping) sum to zero force and zero torque about the origin, to rounding;
+    // over a second of RK4 its momentum stays put and the wobble loses energy.
+    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
+    model::Body body = soft(makeBox("jelly", 2, 1, 0.5, Vec2(1, 2), 0.3), 64);
+    body.state.velocity = Vec2(0.5, -0.2);
+    body.state.angularVelocity = 2;
+    world.bodies.push_back(body);
+    controller::prepareSoftBodies(world);
+    model::SoftGrid& grid = world.softBodies[0];
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const auto k = static_cast<Scalar>(i);
+        grid.velocities[i] += 0.3 * Vec2(std::sin(1.7 * k), std::cos(2.3 * k));
+        grid.positions[i] += 0.01 * Vec2(std::cos(0.9 * k), std::sin(1.3 * k));
+    }
+    controller::updateSoftOwners(world);
+
+    std::vector<model::BodyState> states;
+    controller::gatherStates(world, states);
+    std::vector<controller::BodyDerivative> rates;
+    controller::computeDerivatives(world, states, rates);
+    Vec2 force = Vec2::Zero();
+    Scalar torque = 0;
+    Scalar forceScale = 0;
+    Scalar torqueScale = 0;
+    for (std::size_t i = 1; i < states.size(); ++i) {
+        const Vec2 f = grid.ellipseMass * rates[i].acceleration;
+        force += f;
+        torque += cross(states[i].position, f);
+        forceScale += f.norm();
+        torqueScale += states[i].position.norm() * f.norm();
+    }
+    EXPECT_GT(forceScale, 1.0); // N: the stretched springs and the kicks do pull
+    EXPECT_NEAR(force.norm(), 0, 1e-12 * forceScale);
+    EXPECT_NEAR(torque, 0, 1e-12 * torqueScale);
+
+    const Vec2 momentum = controller::linearMomentum(world);
+    const Scalar energy = controller::computeEnergy(world).total();
+    run(world, 1.0);
+    EXPECT_NEAR((controller::linearMomentum(world) - momentum).norm(), 0, 1e-9 * momentum.norm());
+    EXPECT_LT(controller::computeEnergy(world).total(), energy);
+}
+
 TEST(SoftBody, ItsPathApproachesTheRigidBodysAsTheDensityGrows)
 {
     // A 1 m × 0.5 m box swinging on a scene spring from its corner. Gravity and the spring share
