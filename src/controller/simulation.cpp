@@ -405,9 +405,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // The last step's records move aside and their buffer takes this step's: two buffers take
     // turns, so a large world's records are not allocated afresh every step.
     m_previousContacts.swap(world.contacts);
-    const std::vector<CollisionEvent> events =
-        updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts);
-    m_events.insert(m_events.end(), events.begin(), events.end());
+    updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts, m_collisionScratch, m_events);
     m_profile.eventsMs += millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
 }

@@ -122,6 +122,7 @@ private:
     JointSolver m_jointSolver;
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;
+    CollisionScratch m_collisionScratch;
 };
 
 } // namespace impetus::controller
