@@ -224,7 +224,10 @@ Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar sp
                             b.vertices.size() >= 3 && b.normals.size() == b.vertices.size();
     if (!wellFormed) // a segment or a point has no face normals to test: GJK copes with it
         return collideConvexGeneral(a, b, speculativeDistance);
-    return discardNonFinite(polygons(a, b, speculativeDistance));
+    Manifold m = polygons(a, b, speculativeDistance);
+    if (!allFinite(m))
+        m = Manifold{};
+    return m;
 }
 
 } // namespace impetus::controller

@@ -143,13 +143,24 @@ void Simulation::collide(const model::World& world, Scalar h)
     const Clock::time_point narrowStart = Clock::now();
     // Each pair's manifold goes to its own slot, so a large world's pairs can be split between
     // two threads and still come out in the broad phase's order.
-    m_pairManifolds.resize(m_pairs.size());
+    m_manifolds.resize(m_pairs.size());
     const auto collideRange = [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const ProxyPair& pair = m_pairs[k];
-            m_pairManifolds[k] = controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second),
-                                                     m_margins[pieces[pair.first].body] +
-                                                         m_margins[pieces[pair.second].body]);
+            const ColliderPiece& a = pieces[pair.first];
+            const ColliderPiece& b = pieces[pair.second];
+            const Scalar distance = m_margins[a.body] + m_margins[b.body];
+            ContactSolver::PairManifold& slot = m_manifolds[k];
+            slot.bodyA = a.solver;
+            slot.pieceA = a.piece;
+            slot.bodyB = b.solver;
+            slot.pieceB = b.piece;
+            slot.ownerA = a.body;
+            slot.ownerB = b.body;
+            // Two polygons, the most common pair, go straight to SAT, as collide() would send them.
+            const bool polygons = a.kind == ColliderPiece::Kind::Polygon && b.kind == ColliderPiece::Kind::Polygon;
+            slot.manifold = polygons ? collidePolygons(m_colliders.polygon(pair.first), m_colliders.polygon(pair.second), distance)
+                                     : controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second), distance);
         }
     };
     if (m_tasks && m_pairs.size() >= constants::kParallelMinPairs) {
@@ -158,14 +169,17 @@ void Simulation::collide(const model::World& world, Scalar h)
     } else {
         collideRange(0, m_pairs.size());
     }
-    m_manifolds.clear();
-    for (std::size_t k = 0; k < m_pairs.size(); ++k) {
-        if (m_pairManifolds[k].count == 0)
+    // The pairs without contact drop out, in place and in order: nothing moves while every pair
+    // has a contact, as in a resting pile.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < m_manifolds.size(); ++k) {
+        if (m_manifolds[k].manifold.count == 0)
             continue;
-        const ColliderPiece& a = pieces[m_pairs[k].first];
-        const ColliderPiece& b = pieces[m_pairs[k].second];
-        m_manifolds.push_back({a.solver, a.piece, b.solver, b.piece, m_pairManifolds[k], a.body, b.body});
+        if (kept != k)
+            m_manifolds[kept] = m_manifolds[k];
+        ++kept;
     }
+    m_manifolds.resize(kept);
     m_profile.narrowMs += millisecondsSince(narrowStart);
 }
 
