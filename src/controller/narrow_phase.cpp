@@ -40,7 +40,7 @@ Manifold collide(const ConvexShape& a, const ConvexShape& b, Scalar speculativeD
 
 Manifold discardNonFinite(const Manifold& m)
 {
-    return allFinite(m) ? m : Manifold{};
+    return manifoldIsFinite(m) ? m : Manifold{};
 }
 
 } // namespace impetus::controller

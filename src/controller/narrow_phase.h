@@ -62,7 +62,7 @@ Manifold discardNonFinite(const Manifold& m);
 
 /// True when every number discardNonFinite looks at is finite: the points' positions and
 /// separations, and the normal of a manifold with points.
-inline bool allFinite(const Manifold& m)
+inline bool manifoldIsFinite(const Manifold& m)
 {
     if (m.count == 0)
         return true;

@@ -239,7 +239,7 @@ Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar sp
     if (!wellFormed) // a segment or a point has no face normals to test: GJK copes with it
         return collideConvexGeneral(a, b, speculativeDistance);
     Manifold m = polygons(a, b, speculativeDistance);
-    if (!allFinite(m))
+    if (!manifoldIsFinite(m))
         m = Manifold{};
     return m;
 }
