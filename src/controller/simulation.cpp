@@ -100,22 +100,27 @@ void Simulation::collide(const model::World& world, Scalar h)
     // A body at rest can also be struck and set moving within the step: one impact hands on at
     // most twice the striker's speed (e ≤ 1), so every dynamic body also gets 2·h times the
     // fastest body's speed, and a struck ball finds the wall just behind it.
+    // One pass over the bodies: each one's margin without the fastest body's share (its surface
+    // speed computed once, for both), then that share once the fastest is known.
     Scalar fastest = 0;
-    for (const model::Body& body : world.bodies) {
-        if (!body.fixed)
-            fastest = std::max(fastest, body.state.velocity.norm() +
-                                            std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
-    }
-    for (std::size_t i = n; i < m_startStates.size(); ++i)
-        fastest = std::max(fastest, m_startStates[i].velocity.norm());
-    m_margins.assign(n, constants::kSpeculativeMargin);
+    m_margins.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const model::Body& body = world.bodies[i];
         const model::BodyState& s = body.state;
         const BodyDerivative& d = m_startDerivatives[i];
-        m_margins[i] += h * (s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius) +
-                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+        const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
         if (!body.fixed)
+            fastest = std::max(fastest, speed);
+        m_margins[i] = constants::kSpeculativeMargin;
+        m_margins[i] += h * speed +
+                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+    }
+    for (std::size_t i = n; i < m_startStates.size(); ++i)
+        fastest = std::max(fastest, m_startStates[i].velocity.norm());
+    // m_entries (setUpSolverBodies) tells the fixed bodies without another pass over the large
+    // Body records; a soft body's margin is set afresh below.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_entries[i] != Entry::Fixed)
             m_margins[i] += 2 * h * fastest;
     }
     // A soft body's pieces are its ellipses: its margin is the farthest any of them can move.
