@@ -142,31 +142,20 @@ bool insertionSortWithin(std::vector<std::uint32_t>& order, Less less, std::size
     return true;
 }
 
-/// A proxy as the sweep reads it, laid out contiguously in sweep order so that the inner loop
-/// walks memory forwards instead of jumping around the proxy list.
-struct SweepEntry {
-    Scalar lower = 0; ///< on the sweep axis
-    Scalar upper = 0; ///< on the sweep axis
-    Scalar otherLower = 0; ///< on the other axis
-    Scalar otherUpper = 0; ///< on the other axis
-    std::uint32_t index = 0; ///< into the proxy list
-    std::uint32_t body = 0;
-    bool fixed = false;
-};
-
 /// Sorts pairs by (first, second) in O(n + pairs): a counting sort by `first` (n buckets), then
 /// each bucket by `second`. A comparison sort of the 58,000 pairs of the pyramid grid cost as much
 /// as the whole sweep; the buckets here hold a box's few neighbours (a ground's few hundred), so
 /// sorting them is cheap, with std::sort kept for a bucket that is large.
-void sortPairs(std::vector<ProxyPair>& pairs, std::size_t proxyCount)
+void sortPairs(std::vector<ProxyPair>& pairs, std::size_t proxyCount, std::vector<std::size_t>& start,
+               std::vector<std::size_t>& cursor, std::vector<std::uint32_t>& seconds)
 {
-    std::vector<std::size_t> start(proxyCount + 1, 0);
+    start.assign(proxyCount + 1, 0);
     for (const ProxyPair& pair : pairs)
         ++start[pair.first + 1];
     for (std::size_t i = 0; i < proxyCount; ++i)
         start[i + 1] += start[i];
-    std::vector<std::uint32_t> seconds(pairs.size());
-    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    seconds.resize(pairs.size());
+    cursor.assign(start.begin(), start.end() - 1);
     for (const ProxyPair& pair : pairs)
         seconds[cursor[pair.first]++] = pair.second;
     for (std::size_t first = 0; first < proxyCount; ++first) {
@@ -223,7 +212,8 @@ void BroadPhase::findPairs(std::span<const BroadPhaseProxy> proxies, std::vector
     // Deal the proxies into their strips in sorted order (a counting sort by strip, which is
     // stable), so that each strip's run of entries is itself sorted along the sweep axis.
     const Strips strips = chooseStrips(proxies, other);
-    std::vector<std::size_t> stripStart(strips.count + 1, 0);
+    std::vector<std::size_t>& stripStart = m_stripStart;
+    stripStart.assign(strips.count + 1, 0);
     for (const BroadPhaseProxy& proxy : proxies) {
         if (hasNaN(proxy.box))
             continue;
@@ -232,8 +222,10 @@ void BroadPhase::findPairs(std::span<const BroadPhaseProxy> proxies, std::vector
     }
     for (std::size_t s = 0; s < strips.count; ++s)
         stripStart[s + 1] += stripStart[s];
-    std::vector<SweepEntry> entries(stripStart.back());
-    std::vector<std::size_t> cursor(stripStart.begin(), stripStart.end() - 1);
+    std::vector<SweepEntry>& entries = m_entries;
+    entries.resize(stripStart.back());
+    std::vector<std::size_t>& cursor = m_cursor;
+    cursor.assign(stripStart.begin(), stripStart.end() - 1);
     for (const std::uint32_t i : m_order) {
         const BroadPhaseProxy& proxy = proxies[i];
         if (hasNaN(proxy.box))
@@ -268,7 +260,7 @@ void BroadPhase::findPairs(std::span<const BroadPhaseProxy> proxies, std::vector
 
     // The sweep emits pairs in sweep order, which depends on positions; the contract promises
     // (first, second) order so that the solver visits contacts the same way whatever happened before.
-    sortPairs(pairs, n);
+    sortPairs(pairs, n, m_pairStart, m_cursor, m_seconds);
 }
 
 } // namespace impetus::controller

@@ -34,7 +34,25 @@ public:
     void findPairs(std::span<const BroadPhaseProxy> proxies, std::vector<ProxyPair>& pairs);
 
 private:
+    /// A proxy as the sweep reads it, laid out contiguously in sweep order so that the inner loop
+    /// walks memory forwards instead of jumping around the proxy list.
+    struct SweepEntry {
+        Scalar lower = 0; ///< on the sweep axis
+        Scalar upper = 0; ///< on the sweep axis
+        Scalar otherLower = 0; ///< on the other axis
+        Scalar otherUpper = 0; ///< on the other axis
+        std::uint32_t index = 0; ///< into the proxy list
+        std::uint32_t body = 0;
+        bool fixed = false;
+    };
+
     std::vector<std::uint32_t> m_order; ///< proxy indices sorted by box.lower on the sweep axis
+    // Scratch, kept so that a step allocates nothing.
+    std::vector<SweepEntry> m_entries; ///< per strip, its proxies in sweep order
+    std::vector<std::size_t> m_stripStart; ///< where each strip's entries begin
+    std::vector<std::size_t> m_cursor; ///< fill positions, for the strips and then the pair sort
+    std::vector<std::size_t> m_pairStart; ///< where each first proxy's pairs begin, in the pair sort
+    std::vector<std::uint32_t> m_seconds; ///< the pairs' second proxies, in the pair sort
 };
 
 } // namespace impetus::controller

@@ -135,9 +135,8 @@ ConvexShape ColliderSet::shape(std::uint32_t i) const
     case ColliderPiece::Kind::Polygon:
         break;
     }
-    return PolygonShape{std::span<const Vec2>(m_vertices).subspan(piece.firstVertex, piece.vertexCount),
-                        std::span<const Vec2>(m_normals).subspan(piece.firstVertex, piece.vertexCount),
-                        piece.center};
+    return polygon(i);
 }
+
 
 } // namespace impetus::controller

@@ -47,6 +47,15 @@ public:
     /// Piece i as a shape the narrow phase takes.
     ConvexShape shape(std::uint32_t i) const;
 
+    /// Piece i, which must be a polygon (ColliderPiece::Kind::Polygon), as the narrow phase takes it.
+    PolygonShape polygon(std::uint32_t i) const
+    {
+        const ColliderPiece& piece = m_pieces[i];
+        return PolygonShape{std::span<const Vec2>(m_vertices).subspan(piece.firstVertex, piece.vertexCount),
+                            std::span<const Vec2>(m_normals).subspan(piece.firstVertex, piece.vertexCount),
+                            piece.center};
+    }
+
 private:
     /// Adds the ellipses of a soft body's grid, numbering their state entries from nextEllipse.
     void addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, std::uint32_t& nextEllipse,

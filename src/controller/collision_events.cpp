@@ -25,13 +25,14 @@ bool isTouching(const ContactConstraint& c)
 
 } // namespace
 
-std::vector<CollisionEvent> updateCollisionState(model::World& world, const ContactSolver& contacts,
-                                                 std::span<const SolverBody> bodies,
-                                                 const std::vector<model::ContactRecord>& previous)
+void updateCollisionState(model::World& world, const ContactSolver& contacts, std::span<const SolverBody> bodies,
+                          const std::vector<model::ContactRecord>& previous, CollisionScratch& scratch,
+                          std::vector<CollisionEvent>& events)
 {
     // Body pairs that touched at the end of the last step. Records are sorted by pieces, which is
     // body-pair order unless a concave body has several pieces: sort only then.
-    std::vector<BodyPair> before;
+    std::vector<BodyPair>& before = scratch.touchedBefore;
+    before.clear();
     for (const model::ContactRecord& r : previous) {
         if (r.touching)
             before.emplace_back(r.bodyA.index, r.bodyB.index);
@@ -47,11 +48,17 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
     std::vector<model::ContactRecord>& records = world.contacts;
     records.clear();
     records.reserve(constraints.size());
-    std::vector<CollisionEvent> events;
+    const std::size_t firstEvent = events.size();
     // Constraints come in the same order as `before` (again, up to concave bodies): a cursor finds
     // most pairs, and a binary search the rest.
     std::size_t cursor = 0;
+    // Constraints come in broad-phase order, by ownerA first, so the events already opened for
+    // body A are the last ones. Should that order ever not hold, every event is searched.
+    bool ownersInOrder = true;
+    std::uint32_t lastOwnerA = 0;
     for (const ContactConstraint& c : constraints) {
+        ownersInOrder = ownersInOrder && c.ownerA >= lastOwnerA;
+        lastOwnerA = c.ownerA;
         model::ContactRecord& r = records.emplace_back();
         r.bodyA = model::BodyId{c.ownerA};
         r.pieceA = c.pieceA;
@@ -86,10 +93,17 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
             const ContactConstraintPoint& q = c.points[static_cast<std::size_t>(i)];
             impulse += q.normalImpulse + q.impactImpulse;
         }
-        const auto open = std::find_if(events.begin(), events.end(), [&](const CollisionEvent& e) {
-            return e.bodyA.index == c.ownerA && e.bodyB.index == c.ownerB;
-        });
-        if (open != events.end()) {
+        CollisionEvent* open = nullptr;
+        for (std::size_t k = events.size(); k > firstEvent; --k) {
+            CollisionEvent& e = events[k - 1];
+            if (e.bodyA.index == c.ownerA && e.bodyB.index == c.ownerB) {
+                open = &e;
+                break;
+            }
+            if (ownersInOrder && e.bodyA.index != c.ownerA)
+                break;
+        }
+        if (open) {
             open->normalImpulse += impulse;
             continue;
         }
@@ -108,12 +122,11 @@ std::vector<CollisionEvent> updateCollisionState(model::World& world, const Cont
         events.push_back(e);
     }
 
-    for (const CollisionEvent& e : events) {
-        ++world.bodies[e.bodyA.index].collisionCount;
-        ++world.bodies[e.bodyB.index].collisionCount;
+    for (std::size_t k = firstEvent; k < events.size(); ++k) {
+        ++world.bodies[events[k].bodyA.index].collisionCount;
+        ++world.bodies[events[k].bodyB.index].collisionCount;
         ++world.collisionCount;
     }
-    return events;
 }
 
 } // namespace impetus::controller

@@ -6,7 +6,9 @@
 #include "controller/contact_solver.h"
 #include "model/world.h"
 
+#include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace impetus::controller {
@@ -24,13 +26,20 @@ struct CollisionEvent {
     Scalar normalSpeedAfter = 0; ///< relative normal velocity after the step (> 0: separating), m/s
 };
 
+/// Buffers updateCollisionState reuses from call to call, so that a large world's step allocates
+/// nothing. Holds no state that matters between calls.
+struct CollisionScratch {
+    /// Body pairs (A < B) that touched at the end of the last step, sorted.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> touchedBefore;
+};
+
 /// Decides which contacts touch, sets each body's `colliding` flag, counts contact-begin events
 /// (per pair of bodies, whatever the number of pieces or points) into the bodies' and the world's
 /// collision counts, and stores the step's contact records in world.contacts.
 /// `bodies` hold the velocities after the solve. `previous` are the last step's records.
-/// Returns the events of the step in pair order.
-std::vector<CollisionEvent> updateCollisionState(model::World& world, const ContactSolver& contacts,
-                                                 std::span<const SolverBody> bodies,
-                                                 const std::vector<model::ContactRecord>& previous);
+/// Appends the events of the step, in pair order, to `events`.
+void updateCollisionState(model::World& world, const ContactSolver& contacts, std::span<const SolverBody> bodies,
+                          const std::vector<model::ContactRecord>& previous, CollisionScratch& scratch,
+                          std::vector<CollisionEvent>& events);
 
 } // namespace impetus::controller

@@ -40,12 +40,7 @@ Manifold collide(const ConvexShape& a, const ConvexShape& b, Scalar speculativeD
 
 Manifold discardNonFinite(const Manifold& m)
 {
-    for (int i = 0; i < m.count; ++i) {
-        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
-        if (!isFinite(p.point) || !std::isfinite(p.separation))
-            return {};
-    }
-    return m.count > 0 && !isFinite(m.normal) ? Manifold{} : m;
+    return manifoldIsFinite(m) ? m : Manifold{};
 }
 
 } // namespace impetus::controller

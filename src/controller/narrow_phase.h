@@ -60,6 +60,22 @@ Manifold collideCircles(const CircleShape& a, const CircleShape& b, Scalar specu
 /// not reach the solver as a NaN impulse; the simulation's own checks notice the bad state.
 Manifold discardNonFinite(const Manifold& m);
 
+/// True when every number discardNonFinite looks at is finite: the points' positions and
+/// separations, and the normal of a manifold with points.
+inline bool manifoldIsFinite(const Manifold& m)
+{
+    if (m.count == 0)
+        return true;
+    // x − x is 0 for a finite x and NaN for NaN or ±∞, and a NaN survives the sums: one test
+    // instead of a branch per number.
+    Scalar probe = (m.normal.x() - m.normal.x()) + (m.normal.y() - m.normal.y());
+    for (int i = 0; i < m.count; ++i) {
+        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+        probe += (p.point.x() - p.point.x()) + (p.point.y() - p.point.y()) + (p.separation - p.separation);
+    }
+    return probe == 0;
+}
+
 /// Any pair in which one shape (or both) is an ellipse: GJK + EPA on support functions.
 Manifold collideConvexGeneral(const ConvexShape& a, const ConvexShape& b, Scalar speculativeDistance);
 

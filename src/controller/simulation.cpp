@@ -101,22 +101,27 @@ void Simulation::collide(const model::World& world, Scalar h)
     // A body at rest can also be struck and set moving within the step: one impact hands on at
     // most twice the striker's speed (e ≤ 1), so every dynamic body also gets 2·h times the
     // fastest body's speed, and a struck ball finds the wall just behind it.
+    // One pass over the bodies: each one's margin without the fastest body's share (its surface
+    // speed computed once, for both), then that share once the fastest is known.
     Scalar fastest = 0;
-    for (const model::Body& body : world.bodies) {
-        if (!body.fixed)
-            fastest = std::max(fastest, body.state.velocity.norm() +
-                                            std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
-    }
-    for (std::size_t i = n; i < m_startStates.size(); ++i)
-        fastest = std::max(fastest, m_startStates[i].velocity.norm());
-    m_margins.assign(n, constants::kSpeculativeMargin);
+    m_margins.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const model::Body& body = world.bodies[i];
         const model::BodyState& s = body.state;
         const BodyDerivative& d = m_startDerivatives[i];
-        m_margins[i] += h * (s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius) +
-                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+        const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
         if (!body.fixed)
+            fastest = std::max(fastest, speed);
+        m_margins[i] = constants::kSpeculativeMargin;
+        m_margins[i] += h * speed +
+                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+    }
+    for (std::size_t i = n; i < m_startStates.size(); ++i)
+        fastest = std::max(fastest, m_startStates[i].velocity.norm());
+    // m_entries (setUpSolverBodies) tells the fixed bodies without another pass over the large
+    // Body records; a soft body's margin is set afresh below.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_entries[i] != Entry::Fixed)
             m_margins[i] += 2 * h * fastest;
     }
     // A soft body's pieces are its ellipses: its margin is the farthest any of them can move.
@@ -144,13 +149,24 @@ void Simulation::collide(const model::World& world, Scalar h)
     const Clock::time_point narrowStart = Clock::now();
     // Each pair's manifold goes to its own slot, so a large world's pairs can be split between
     // two threads and still come out in the broad phase's order.
-    m_pairManifolds.resize(m_pairs.size());
+    m_manifolds.resize(m_pairs.size());
     const auto collideRange = [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const ProxyPair& pair = m_pairs[k];
-            m_pairManifolds[k] = controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second),
-                                                     m_margins[pieces[pair.first].body] +
-                                                         m_margins[pieces[pair.second].body]);
+            const ColliderPiece& a = pieces[pair.first];
+            const ColliderPiece& b = pieces[pair.second];
+            const Scalar distance = m_margins[a.body] + m_margins[b.body];
+            ContactSolver::PairManifold& slot = m_manifolds[k];
+            slot.bodyA = a.solver;
+            slot.pieceA = a.piece;
+            slot.bodyB = b.solver;
+            slot.pieceB = b.piece;
+            slot.ownerA = a.body;
+            slot.ownerB = b.body;
+            // Two polygons, the most common pair, go straight to SAT, as collide() would send them.
+            const bool polygons = a.kind == ColliderPiece::Kind::Polygon && b.kind == ColliderPiece::Kind::Polygon;
+            slot.manifold = polygons ? collidePolygons(m_colliders.polygon(pair.first), m_colliders.polygon(pair.second), distance)
+                                     : controller::collide(m_colliders.shape(pair.first), m_colliders.shape(pair.second), distance);
         }
     };
     if (m_tasks && m_pairs.size() >= constants::kParallelMinPairs) {
@@ -159,14 +175,17 @@ void Simulation::collide(const model::World& world, Scalar h)
     } else {
         collideRange(0, m_pairs.size());
     }
-    m_manifolds.clear();
-    for (std::size_t k = 0; k < m_pairs.size(); ++k) {
-        if (m_pairManifolds[k].count == 0)
+    // The pairs without contact drop out, in place and in order: nothing moves while every pair
+    // has a contact, as in a resting pile.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < m_manifolds.size(); ++k) {
+        if (m_manifolds[k].manifold.count == 0)
             continue;
-        const ColliderPiece& a = pieces[m_pairs[k].first];
-        const ColliderPiece& b = pieces[m_pairs[k].second];
-        m_manifolds.push_back({a.solver, a.piece, b.solver, b.piece, m_pairManifolds[k], a.body, b.body});
+        if (kept != k)
+            m_manifolds[kept] = m_manifolds[k];
+        ++kept;
     }
+    m_manifolds.resize(kept);
     m_profile.narrowMs += millisecondsSince(narrowStart);
 }
 
@@ -406,9 +425,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // The last step's records move aside and their buffer takes this step's: two buffers take
     // turns, so a large world's records are not allocated afresh every step.
     m_previousContacts.swap(world.contacts);
-    const std::vector<CollisionEvent> events =
-        updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts);
-    m_events.insert(m_events.end(), events.begin(), events.end());
+    updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts, m_collisionScratch, m_events);
     m_profile.eventsMs += millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
 }

@@ -91,7 +91,6 @@ private:
     void shareJointMotion(const model::World& world, bool positions);
 
     SolverSettings m_settings;
-    std::vector<Manifold> m_pairManifolds; ///< one per broad-phase pair, filled by both threads
     std::unique_ptr<Integrator> m_euler;
     std::unique_ptr<Integrator> m_semiImplicitEuler;
     std::unique_ptr<Integrator> m_rk4;
@@ -119,6 +118,7 @@ private:
     std::vector<std::pair<std::uint32_t, std::uint32_t>> m_proxyPieces; ///< per coarse proxy: its pieces
     std::vector<std::uint32_t> m_nearA;
     std::vector<std::uint32_t> m_nearB;
+    /// One per broad-phase pair (filled by both threads), then only those with contact points.
     std::vector<ContactSolver::PairManifold> m_manifolds;
     ColliderSet m_colliders;
     BroadPhase m_broadPhase;
@@ -126,6 +126,7 @@ private:
     JointSolver m_jointSolver;
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;
+    CollisionScratch m_collisionScratch;
 };
 
 } // namespace impetus::controller
