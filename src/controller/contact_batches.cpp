@@ -7,11 +7,13 @@ namespace impetus::controller {
 
 namespace {
 
-/// The velocities of one side (A or B) of every lane.
+/// The velocities of one side (A or B) of every lane, and its bodies' inverse mass properties.
 struct LaneVelocities {
     Lanes x{};
     Lanes y{};
     Lanes angular{};
+    Lanes invMass{};
+    Lanes invInertia{};
 };
 
 // Loading and storing go lane by lane: the bodies lie anywhere in memory. No two lanes of a batch
@@ -25,6 +27,8 @@ struct LaneVelocities {
         v.x[lane] = body.velocity.x();
         v.y[lane] = body.velocity.y();
         v.angular[lane] = body.angularVelocity;
+        v.invMass[lane] = body.invMass;
+        v.invInertia[lane] = body.invInertia;
     }
     return v;
 }
@@ -45,17 +49,17 @@ struct LaneVelocities {
 
 /// The impulse λ along the unit direction (dx, dy), with arms rA × d and rB × d: −λd on A and +λd
 /// on B, as applyImpulse does for one contact.
-[[gnu::always_inline]] inline void apply(const ContactBatch& c, LaneVelocities& a, LaneVelocities& b, const Lanes& impulse,
-                  const Lanes& dx, const Lanes& dy, const Lanes& armA, const Lanes& armB)
+[[gnu::always_inline]] inline void apply(LaneVelocities& a, LaneVelocities& b, const Lanes& impulse, const Lanes& dx,
+                                         const Lanes& dy, const Lanes& armA, const Lanes& armB)
 {
     const Lanes px = impulse * dx;
     const Lanes py = impulse * dy;
-    a.x -= c.invMassA * px;
-    a.y -= c.invMassA * py;
-    a.angular -= c.invInertiaA * (impulse * armA);
-    b.x += c.invMassB * px;
-    b.y += c.invMassB * py;
-    b.angular += c.invInertiaB * (impulse * armB);
+    a.x -= a.invMass * px;
+    a.y -= a.invMass * py;
+    a.angular -= a.invInertia * (impulse * armA);
+    b.x += b.invMass * px;
+    b.y += b.invMass * py;
+    b.angular += b.invInertia * (impulse * armB);
 }
 
 /// The relative velocity of B's point to A's along (dx, dy): (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
@@ -143,8 +147,8 @@ __attribute__((target_clones("avx2", "default"))) void warmStartBatches(std::spa
         const Lanes tx = c.normalY;
         const Lanes ty = -c.normalX;
         for (const BatchPoint& p : c.points) {
-            apply(c, a, b, p.normalImpulse, c.normalX, c.normalY, p.normalArmA, p.normalArmB);
-            apply(c, a, b, p.tangentImpulse, tx, ty, p.tangentArmA, p.tangentArmB);
+            apply(a, b, p.normalImpulse, c.normalX, c.normalY, p.normalArmA, p.normalArmB);
+            apply(a, b, p.tangentImpulse, tx, ty, p.tangentArmA, p.tangentArmB);
             c.acted |= (p.normalImpulse != zero) | (p.tangentImpulse != zero);
         }
         store(c.writeA, a);
@@ -171,7 +175,7 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
             const Lanes delta = clamped - p.tangentImpulse;
             p.tangentImpulse = clamped;
             c.acted |= delta != zero;
-            apply(c, a, b, delta, tx, ty, p.tangentArmA, p.tangentArmB);
+            apply(a, b, delta, tx, ty, p.tangentArmA, p.tangentArmB);
         }
 
         // Normal: the total impulse x solves x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0, where b is the
@@ -180,19 +184,27 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
         // and keeps the first that holds.
         BatchPoint& p1 = c.points[0];
         BatchPoint& p2 = c.points[1];
+        // K from the masses and arms, in the order ContactSolver builds it for one contact.
+        const Lanes mass = a.invMass + b.invMass;
+        const Lanes k11 = mass + a.invInertia * p1.normalArmA * p1.normalArmA + b.invInertia * p1.normalArmB * p1.normalArmB;
+        const Lanes k22 = mass + a.invInertia * p2.normalArmA * p2.normalArmA + b.invInertia * p2.normalArmB * p2.normalArmB;
+        const Lanes k12 = mass + a.invInertia * p1.normalArmA * p2.normalArmA + b.invInertia * p1.normalArmB * p2.normalArmB;
+        const Lanes inverseDeterminant = 1 / (k11 * k22 - k12 * k12);
         const Lanes old1 = p1.normalImpulse;
         const Lanes old2 = p2.normalImpulse;
         const Lanes b1 = relativeAlong(a, b, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB) + p1.gapSpeed -
-                         (c.k11 * old1 + c.k12 * old2);
+                         (k11 * old1 + k12 * old2);
         const Lanes b2 = relativeAlong(a, b, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB) + p2.gapSpeed -
-                         (c.k12 * old1 + c.k22 * old2);
-        const Lanes both1 = -(c.inverse11 * b1 + c.inverse12 * b2);
-        const Lanes both2 = -(c.inverse12 * b1 + c.inverse22 * b2);
+                         (k12 * old1 + k22 * old2);
+        // x = −K⁻¹b, K⁻¹ = [k22 −k12; −k12 k11] / det. Only lanes with blockSolve use it; elsewhere
+        // det may be 0 and the values are never selected.
+        const Lanes both1 = -((k22 * b1 - k12 * b2) * inverseDeterminant);
+        const Lanes both2 = -((k11 * b2 - k12 * b1) * inverseDeterminant);
         const LaneMask useBoth = c.blockSolve & (both1 >= zero) & (both2 >= zero);
         const Lanes first = -b1 * p1.normalMass;
-        const LaneMask useFirst = (first >= zero) & (c.k12 * first + b2 >= zero);
+        const LaneMask useFirst = (first >= zero) & (k12 * first + b2 >= zero);
         const Lanes second = -b2 * p2.normalMass;
-        const LaneMask useSecond = (second >= zero) & (c.k12 * second + b1 >= zero);
+        const LaneMask useSecond = (second >= zero) & (k12 * second + b1 >= zero);
         const Lanes x1 = select(useBoth, both1, select(useFirst, first, zero));
         const Lanes x2 = select(useBoth, both2, select(useFirst, zero, select(useSecond, second, zero)));
         const Lanes delta1 = x1 - old1;
@@ -200,8 +212,8 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
         p1.normalImpulse = x1;
         p2.normalImpulse = x2;
         c.acted |= (delta1 != zero) | (delta2 != zero);
-        apply(c, a, b, delta1, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB);
-        apply(c, a, b, delta2, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB);
+        apply(a, b, delta1, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB);
+        apply(a, b, delta2, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB);
 
         store(c.writeA, a);
         store(c.writeB, b);

@@ -42,23 +42,16 @@ struct BatchPoint {
 };
 
 /// kBatchLanes contacts of one colour. Every lane has two points: a one-point contact's second
-/// point has no mass and a gap so large it can never become active, and a lane with no contact
-/// (padding at the end of a colour) is such a contact between two bodies that cannot move.
+/// point has no arms, no mass and a gap so large it can never become active, and a lane with no
+/// contact (padding at the end of a colour) is such a contact between two bodies that cannot move.
 struct ContactBatch {
     static_assert(alignof(Lanes) == sizeof(Lanes));
+    // Kept small, as the passes stream through every batch eight times a step: the bodies' inverse
+    // masses are read from the bodies, in the cache line that holds their velocities, and the 2×2
+    // effective-mass matrix K and its inverse are computed from them and the arms.
     Lanes normalX{}; ///< unit normal from A to B
     Lanes normalY{};
     Lanes friction{}; ///< mixed μ
-    Lanes invMassA{}; ///< 1/kg (0 for a fixed body)
-    Lanes invInertiaA{}; ///< 1/(kg·m²)
-    Lanes invMassB{};
-    Lanes invInertiaB{};
-    Lanes k11{}; ///< the two-point effective-mass matrix K, 1/kg
-    Lanes k12{};
-    Lanes k22{};
-    Lanes inverse11{}; ///< K⁻¹, kg (used only where blockSolve is set)
-    Lanes inverse12{};
-    Lanes inverse22{};
     LaneMask blockSolve{}; ///< both points may be solved together (K well conditioned)
     LaneMask acted{}; ///< an impulse acted on this lane's bodies this step
     std::array<BatchPoint, 2> points{};

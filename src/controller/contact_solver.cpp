@@ -951,18 +951,12 @@ void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_
             batch.normalX[lane] = n.x();
             batch.normalY[lane] = n.y();
             batch.friction[lane] = c ? c->friction : 0;
-            batch.invMassA[lane] = positions.invMassA[lane] = a.invMass;
-            batch.invInertiaA[lane] = positions.invInertiaA[lane] = a.invInertia;
-            batch.invMassB[lane] = positions.invMassB[lane] = b.invMass;
-            batch.invInertiaB[lane] = positions.invInertiaB[lane] = b.invInertia;
-            // A one-point contact's second point has no mass and can never close its gap: only
-            // the "first point alone" and "none" cases can hold, which is the one-point solve.
-            batch.k11[lane] = c ? c->k(0, 0) : 1;
-            batch.k12[lane] = two ? c->k(0, 1) : 0;
-            batch.k22[lane] = two ? c->k(1, 1) : 1;
-            batch.inverse11[lane] = two ? c->normalMassBlock(0, 0) : 0;
-            batch.inverse12[lane] = two ? c->normalMassBlock(0, 1) : 0;
-            batch.inverse22[lane] = two ? c->normalMassBlock(1, 1) : 0;
+            positions.invMassA[lane] = a.invMass;
+            positions.invInertiaA[lane] = a.invInertia;
+            positions.invMassB[lane] = b.invMass;
+            positions.invInertiaB[lane] = b.invInertia;
+            // A one-point contact's second point has no arms or mass and can never close its gap:
+            // only the "first point alone" and "none" cases can hold, which is the one-point solve.
             batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
             const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
             positions.localNormalX[lane] = localNormal.x();

@@ -8,13 +8,14 @@ namespace impetus::controller {
 
 /// A body as the constraint solvers see it: velocity, pose and inverse mass properties. Fixed
 /// bodies have zero inverse mass and zero velocity. The fields the solvers read most come first and
-/// fill one cache line.
+/// fill one cache line: velocity, angular velocity and the inverse mass properties, which is all
+/// the velocity passes read (contact_batches.h).
 struct alignas(64) SolverBody {
     Vec2 velocity = Vec2::Zero(); ///< m/s
     Scalar angularVelocity = 0; ///< rad/s
+    Scalar invMass = 0; ///< 1/kg
     Vec2 position = Vec2::Zero(); ///< centre of mass, m (moved by position correction)
     Scalar angle = 0; ///< rad (moved by position correction)
-    Scalar invMass = 0; ///< 1/kg
     Scalar invInertia = 0; ///< 1/(kg·m²)
     /// Impact impulses applied at time of impact τ·h, summed as Σ τ·Δv: the part of the impact's
     /// velocity change that must not count for the time before the impact (m/s, rad/s).
