@@ -295,6 +295,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     };
     const std::size_t firstCount = nonEmpty(0, half);
     m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
+    m_constraintBodies.resize(m_constraints.size());
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
     m_rotations.resize(bodies.size());
     const auto rotationsOf = [&](std::size_t begin, std::size_t end) {
@@ -430,6 +431,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
 
         // What solveImpacts() starts from, found while the constraint is at hand.
         const auto index = static_cast<std::uint32_t>(&c - m_constraints.data());
+        m_constraintBodies[index] = {c.bodyA, c.bodyB};
         m_preparedPoints[part] += static_cast<std::size_t>(c.pointCount);
         if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
             m_preparedCandidates[part].push_back({*fastest, index, 0});
@@ -468,9 +470,9 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     // when some contact approaches: a resting scene, the common case, never needs it.
     if (!heap.empty()) {
         m_bodyConstraintStart.assign(bodies.size() + 1, 0);
-        for (const ContactConstraint& c : m_constraints) {
-            ++m_bodyConstraintStart[c.bodyA + 1];
-            ++m_bodyConstraintStart[c.bodyB + 1];
+        for (const auto& [bodyA, bodyB] : m_constraintBodies) {
+            ++m_bodyConstraintStart[bodyA + 1];
+            ++m_bodyConstraintStart[bodyB + 1];
         }
         for (std::size_t i = 0; i < bodies.size(); ++i)
             m_bodyConstraintStart[i + 1] += m_bodyConstraintStart[i];
@@ -478,8 +480,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         std::vector<std::uint32_t>& fill = m_bodyConstraintFill;
         fill.assign(m_bodyConstraintStart.begin(), m_bodyConstraintStart.end() - 1);
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
-            m_bodyConstraints[fill[m_constraints[ci].bodyA]++] = ci;
-            m_bodyConstraints[fill[m_constraints[ci].bodyB]++] = ci;
+            m_bodyConstraints[fill[m_constraintBodies[ci][0]]++] = ci;
+            m_bodyConstraints[fill[m_constraintBodies[ci][1]]++] = ci;
         }
     }
 
@@ -847,8 +849,8 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
     for (auto it = m_sortKeys.begin(); it != m_sortKeys.end(); ++it)
         m_half[it->second] = it < middle ? 0 : 1;
     for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
-        const std::uint8_t ha = m_half[m_constraints[ci].bodyA];
-        const std::uint8_t hb = m_half[m_constraints[ci].bodyB];
+        const std::uint8_t ha = m_half[m_constraintBodies[ci][0]];
+        const std::uint8_t hb = m_half[m_constraintBodies[ci][1]];
         const std::uint8_t half = ha == kFixedHalf ? hb : (hb == kFixedHalf || hb == ha ? ha : 2);
         m_groups[half == kFixedHalf ? 0 : half].push_back(ci);
     }
@@ -875,10 +877,10 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
         m_colourOf.resize(group.size());
         std::array<std::size_t, kColours + 1> count{};
         for (std::size_t k = 0; k < group.size(); ++k) {
-            const ContactConstraint& c = m_constraints[group[k]];
-            const bool moveA = movable(bodies[c.bodyA]);
-            const bool moveB = movable(bodies[c.bodyB]);
-            const std::uint64_t taken = (moveA ? m_colourMasks[c.bodyA] : 0) | (moveB ? m_colourMasks[c.bodyB] : 0);
+            const auto [bodyA, bodyB] = m_constraintBodies[group[k]];
+            const bool moveA = movable(bodies[bodyA]);
+            const bool moveB = movable(bodies[bodyB]);
+            const std::uint64_t taken = (moveA ? m_colourMasks[bodyA] : 0) | (moveB ? m_colourMasks[bodyB] : 0);
             const int colour = std::countr_one(taken);
             m_colourOf[k] = static_cast<std::uint8_t>(colour);
             ++count[static_cast<std::size_t>(colour)];
@@ -886,9 +888,9 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
                 continue;
             const std::uint64_t bit = std::uint64_t{1} << colour;
             if (moveA)
-                m_colourMasks[c.bodyA] |= bit;
+                m_colourMasks[bodyA] |= bit;
             if (moveB)
-                m_colourMasks[c.bodyB] |= bit;
+                m_colourMasks[bodyB] |= bit;
         }
         // Each colour fills whole batches, the last one padded: lay the lanes out colour by colour,
         // keeping the group's order within a colour.

@@ -221,6 +221,9 @@ private:
                             const Vec2& impulse, std::span<SolverBody> bodies);
 
     std::vector<ContactConstraint> m_constraints;
+    /// Each constraint's two solver bodies, packed: partition() and colour() read only these, and
+    /// a walk over the whole constraints would touch a cache line per constraint.
+    std::vector<std::array<std::uint32_t, 2>> m_constraintBodies;
     std::vector<TimedImpulse> m_impulseTimeline;
     std::vector<std::uint32_t> m_lastTimedImpulse; ///< per body: its latest timeline entry
     std::vector<Candidate> m_candidates; ///< the impact heap
