@@ -723,21 +723,26 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
         }
         return;
     }
-    for (std::size_t bi = 0; bi < m_batches.size(); ++bi) {
-        const ContactBatch& batch = m_batches[bi];
-        for (int lane = 0; lane < kBatchLanes; ++lane) {
-            const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + static_cast<std::size_t>(lane)];
-            if (ci == kNoConstraint)
-                continue;
-            ContactConstraint& c = m_constraints[ci];
-            for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-                c.points[i].normalImpulse = batch.points[i].normalImpulse[lane];
-                c.points[i].tangentImpulse = batch.points[i].tangentImpulse[lane];
+    // Each group writes its own constraints and marks its own movable bodies, so the halves of a
+    // split world can do this side by side too.
+    runGroups([&](int g) {
+        const auto ug = static_cast<std::size_t>(g);
+        for (std::size_t bi = m_batchGroupStart[ug]; bi < m_batchGroupStart[ug + 1]; ++bi) {
+            const ContactBatch& batch = m_batches[bi];
+            for (int lane = 0; lane < kBatchLanes; ++lane) {
+                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + static_cast<std::size_t>(lane)];
+                if (ci == kNoConstraint)
+                    continue;
+                ContactConstraint& c = m_constraints[ci];
+                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+                    c.points[i].normalImpulse = batch.points[i].normalImpulse[lane];
+                    c.points[i].tangentImpulse = batch.points[i].tangentImpulse[lane];
+                }
+                if (batch.acted[lane] != 0)
+                    markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
             }
-            if (batch.acted[lane] != 0)
-                markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
         }
-    }
+    });
 }
 
 bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere)
