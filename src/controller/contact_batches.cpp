@@ -178,10 +178,13 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
             apply(a, b, delta, tx, ty, p.tangentArmA, p.tangentArmB);
         }
 
-        // Normal: the total impulse x solves x ≥ 0, w = b + K·x ≥ 0, xᵢwᵢ = 0, where b is the
-        // velocity (plus the allowed approach s⁺/h) without this contact's accumulated impulse.
-        // Every lane tries the active sets in order (both points, the first, the second, none)
-        // and keeps the first that holds.
+        // Normal. Where the 2×2 block solve applies, the total impulse x solves x ≥ 0,
+        // w = b + K·x ≥ 0, xᵢwᵢ = 0, where b is the velocity (plus the allowed approach s⁺/h)
+        // without this contact's accumulated impulse: the lane tries the active sets in order
+        // (both points, the first, the second, none) and keeps the first that holds. Elsewhere (one
+        // point, or two so close together that K is nearly singular) each point is solved on its
+        // own, one after the other, as ContactSolver does for one contact; a missing second point
+        // has no mass, so its impulse stays 0.
         BatchPoint& p1 = c.points[0];
         BatchPoint& p2 = c.points[1];
         // K from the masses and arms, in the order ContactSolver builds it for one contact.
@@ -192,28 +195,35 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
         const Lanes inverseDeterminant = 1 / (k11 * k22 - k12 * k12);
         const Lanes old1 = p1.normalImpulse;
         const Lanes old2 = p2.normalImpulse;
-        const Lanes b1 = relativeAlong(a, b, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB) + p1.gapSpeed -
-                         (k11 * old1 + k12 * old2);
+        const Lanes vn1 = relativeAlong(a, b, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB) + p1.gapSpeed;
+        const Lanes b1 = vn1 - (k11 * old1 + k12 * old2);
         const Lanes b2 = relativeAlong(a, b, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB) + p2.gapSpeed -
                          (k12 * old1 + k22 * old2);
         // x = −K⁻¹b, K⁻¹ = [k22 −k12; −k12 k11] / det. Only lanes with blockSolve use it; elsewhere
         // det may be 0 and the values are never selected.
         const Lanes both1 = -((k22 * b1 - k12 * b2) * inverseDeterminant);
         const Lanes both2 = -((k11 * b2 - k12 * b1) * inverseDeterminant);
-        const LaneMask useBoth = c.blockSolve & (both1 >= zero) & (both2 >= zero);
+        const LaneMask useBoth = (both1 >= zero) & (both2 >= zero);
         const Lanes first = -b1 * p1.normalMass;
         const LaneMask useFirst = (first >= zero) & (k12 * first + b2 >= zero);
         const Lanes second = -b2 * p2.normalMass;
         const LaneMask useSecond = (second >= zero) & (k12 * second + b1 >= zero);
-        const Lanes x1 = select(useBoth, both1, select(useFirst, first, zero));
-        const Lanes x2 = select(useBoth, both2, select(useFirst, zero, select(useSecond, second, zero)));
+        const Lanes block1 = select(useBoth, both1, select(useFirst, first, zero));
+        const Lanes block2 = select(useBoth, both2, select(useFirst, zero, select(useSecond, second, zero)));
+
+        const Lanes alone1 = old1 - vn1 * p1.normalMass;
+        const Lanes x1 = select(c.blockSolve, block1, select(alone1 < zero, zero, alone1));
         const Lanes delta1 = x1 - old1;
-        const Lanes delta2 = x2 - old2;
         p1.normalImpulse = x1;
-        p2.normalImpulse = x2;
-        c.acted |= (delta1 != zero) | (delta2 != zero);
         apply(a, b, delta1, c.normalX, c.normalY, p1.normalArmA, p1.normalArmB);
+        // The second point alone sees the first point's impulse.
+        const Lanes vn2 = relativeAlong(a, b, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB) + p2.gapSpeed;
+        const Lanes alone2 = old2 - vn2 * p2.normalMass;
+        const Lanes x2 = select(c.blockSolve, block2, select(alone2 < zero, zero, alone2));
+        const Lanes delta2 = x2 - old2;
+        p2.normalImpulse = x2;
         apply(a, b, delta2, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB);
+        c.acted |= (delta1 != zero) | (delta2 != zero);
 
         store(c.writeA, a);
         store(c.writeB, b);
@@ -254,7 +264,10 @@ __attribute__((target_clones("avx2", "default"))) Scalar solvePositionBatches(st
             const Lanes armA = armAX * ny - armAY * nx;
             const Lanes armB = armBX * ny - armBY * nx;
             const Lanes k = c.invMassA + c.invMassB + c.invInertiaA * armA * armA + c.invInertiaB * armB * armB;
-            const Lanes mass = select(k > zero, 1 / k, zero);
+            // Only where there is something to correct and a body that can move: padding lanes
+            // (k = 0) never divide by zero, and a correction of 0 never meets an infinite mass.
+            const LaneMask corrects = (k > zero) & (correction != zero);
+            const Lanes mass = select(corrects, 1 / select(corrects, k, zero + 1), zero);
             const Lanes impulse = -correction * mass;
             const Lanes px = impulse * nx;
             const Lanes py = impulse * ny;

@@ -104,8 +104,9 @@ struct PositionBatch {
 void warmStartBatches(std::span<ContactBatch> batches);
 
 /// One sequential-impulse pass over the batches in order: per lane, Coulomb friction at each
-/// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, two points solved together by
-/// enumerating the complementarity problem's active sets, as ContactSolver does for one contact.
+/// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, as ContactSolver does for one
+/// contact: two points together by enumerating the complementarity problem's active sets where
+/// the block solve applies, else one point after the other.
 void solveBatches(std::span<ContactBatch> batches);
 
 /// One non-linear Gauss–Seidel pass over the batches in order, as ContactSolver::solvePositions

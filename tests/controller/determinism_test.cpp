@@ -4,6 +4,7 @@
 #include "controller/simulation.h"
 #include "controller/solver_under_test.h"
 #include "model/example_scenes.h"
+#include "support/world_builders.h"
 
 #include <gtest/gtest.h>
 
@@ -91,6 +92,26 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     Simulation withThread(settingsUnderTest());
     SolverSettings single = settingsUnderTest();
     single.secondThread = false;
+    Simulation withoutThread(single);
+    for (int i = 0; i < 120; ++i) {
+        withThread.step(twoThreads);
+        withoutThread.step(oneThread);
+    }
+    ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
+    EXPECT_EQ(twoThreads, oneThread);
+}
+
+// Batches of their own for contacts that find every colour taken, in a world split over two
+// threads: 8 planks carrying 70 balls each (over 512 contacts) give the same bits either way.
+TEST(Determinism, OverflowingColoursGiveTheSameBitsOnOneThreadOrTwo)
+{
+    model::World twoThreads = testing::makeLoadedPlanks(8, 70);
+    model::World oneThread = twoThreads;
+    SolverSettings batched = settingsUnderTest();
+    batched.batchMinConstraints = 0;
+    SolverSettings single = batched;
+    single.secondThread = false;
+    Simulation withThread(batched);
     Simulation withoutThread(single);
     for (int i = 0; i < 120; ++i) {
         withThread.step(twoThreads);

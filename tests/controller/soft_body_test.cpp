@@ -7,6 +7,7 @@
 #include "controller/soft_comparison.h"
 #include "controller/soft_density.h"
 #include "controller/soft_stability.h"
+#include "controller/solver_under_test.h"
 #include "model/constants.h"
 #include "support/world_builders.h"
 
@@ -48,7 +49,7 @@ model::World worldWithGround()
 
 void run(model::World& world, Scalar seconds)
 {
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     const auto steps = static_cast<int>(std::lround(seconds / world.settings.timeStep));
     for (int i = 0; i < steps; ++i)
         simulation.step(world);
@@ -237,7 +238,7 @@ TEST(SoftBody, TwoStackedSoftBodiesDoNotPassIntoEachOther)
     model::World world = worldWithGround();
     world.bodies.push_back(withMaterial(soft(makeBox("lower", 1, 1, 1, Vec2(0, 0.52)), 64), 0, 0.5));
     world.bodies.push_back(withMaterial(soft(makeBox("upper", 1, 1, 1, Vec2(0.2, 1.6)), 64), 0, 0.5));
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     // Deepest overlap of an ellipse (a circle: square cells) of one body into one of the other.
     Scalar worstOverlap = 0;
     for (int i = 0; i < 960; ++i) {
@@ -268,7 +269,7 @@ TEST(SoftBody, CrushedUnderAHeavyBoxItRecoversItsShape)
     controller::prepareSoftBodies(world);
     const Scalar restArea = controller::softRestLatticeArea(world.softBodies[0]);
 
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     Scalar smallest = INFINITY;
     int inverted = 0;
     const auto steps = [&](Scalar seconds) {
@@ -306,7 +307,7 @@ TEST(SoftBody, EnergyFallsUnderDamping)
     for (Vec2& p : grid.positions)
         p = Vec2(1, 1) + 1.2 * (p - Vec2(1, 1));
 
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     Scalar previous = controller::computeEnergy(world).total();
     const Scalar start = previous;
     EXPECT_GT(start, 1.0); // J: about 0.5 · 2000 · (0.025 m)² per spring
@@ -407,7 +408,7 @@ TEST(SoftBody, LandingIsOneContactBeginForTheBodyPair)
     // rebound (a jelly bounces); each new landing is one more begin, never one per ellipse.
     model::World world = worldWithGround();
     world.bodies.push_back(withMaterial(soft(makeBox("jelly", 1, 1, 1, Vec2(0, 0.7)), 64), 0, 0.5));
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     int landings = 0;
     int events = 0;
     bool wasColliding = false;
@@ -447,7 +448,7 @@ TEST(SoftBody, CollidesWithARigidBox)
     run(world, 4.0);
     // Over the next 2 s it stays where it is, on top: a known residual sway of the block on the
     // jelly (about a millimetre, ~1 cm/s, see docs/physics.md) but no drift and no sinking.
-    controller::Simulation simulation;
+    controller::Simulation simulation(controller::settingsUnderTest());
     Vec2 low = Vec2::Constant(INFINITY);
     Vec2 high = Vec2::Constant(-INFINITY);
     for (int i = 0; i < 480; ++i) {

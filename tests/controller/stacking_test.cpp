@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -97,6 +98,51 @@ TEST(Stacking, TheGroundCarriesTheWholeWeight)
         }
         EXPECT_NEAR(carried / world.settings.timeStep, weight, 1e-6 * weight) << "base " << base;
     }
+}
+
+// A 1 m box balanced on a fixed pedestal 1 cm wide. The contact's two points are so close that K is
+// nearly singular and the points are solved one at a time, not as a 2×2 block: the box must still
+// rest at its true height without sinking, as on a wide support.
+TEST(Stacking, BoxBalancedOnANarrowPedestalStaysPut)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -9.81));
+    world.bodies.push_back(withMaterial(makeGround("pedestal", 0.01, 1), 0.0, 0.6));
+    world.bodies.push_back(withMaterial(makeBox("box", 1.0, 1.0, 1.0, Vec2(0, 0.5)), 0.0, 0.6));
+    Simulation simulation(settingsUnderTest());
+    Scalar fastest = 0;
+    for (int i = 0; i < 240; ++i) {
+        simulation.step(world);
+        fastest = std::max(fastest, std::abs(world.bodies[1].state.velocity.y()));
+    }
+    EXPECT_NEAR(world.bodies[1].state.position.y(), 0.5, constants::kLinearSlop);
+    // g·h = 0.04 m/s would mean the contact force is lost every step.
+    EXPECT_LT(fastest, 1e-3);
+}
+
+// Eighty balls dropped a few millimetres onto a plank (81 contacts at the plank, more than the 64
+// colours), every world batched: everything comes to rest at its true height, and the ground
+// carries the whole weight.
+TEST(Stacking, APlankWithMoreContactsThanColoursComesToRest)
+{
+    model::World world = testing::makeLoadedPlanks(1, 80);
+    SolverSettings settings = settingsUnderTest();
+    settings.batchMinConstraints = 0;
+    Simulation simulation(settings);
+    for (int i = 0; i < 480; ++i)
+        simulation.step(world);
+    Scalar weight = 0;
+    for (std::size_t i = 1; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        weight += body.mass * -world.settings.gravity.y();
+        EXPECT_LT(body.state.velocity.norm(), 1e-6) << body.name;
+        EXPECT_NEAR(body.state.position.y(), i == 1 ? 0.1 : 0.3, 2 * constants::kLinearSlop) << body.name;
+    }
+    Scalar carried = 0;
+    for (const model::ContactRecord& record : world.contacts) {
+        if (world.body(record.bodyA).fixed || world.body(record.bodyB).fixed)
+            carried += record.normalImpulses[0] + record.normalImpulses[1];
+    }
+    EXPECT_NEAR(carried / world.settings.timeStep, weight, 1e-6 * weight);
 }
 
 // Box2D's large pyramid (base 100, 5,050 boxes) stands: after 500 steps the top box has moved

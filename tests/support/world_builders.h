@@ -86,4 +86,26 @@ inline model::World makeOscillator(model::IntegratorKind integrator, Scalar time
     return world;
 }
 
+/// `planks` planks on the ground, each carrying `balls` balls: a plank touches more bodies than
+/// there are colours (64), so some of its contacts are solved in batches of their own.
+inline model::World makeLoadedPlanks(int planks, int balls)
+{
+    constexpr Scalar kRadius = 0.1;
+    constexpr Scalar kSpacing = 0.25;
+    const Scalar plankWidth = balls * kSpacing;
+    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -9.81));
+    world.bodies.push_back(withMaterial(makeGround("ground", planks * (plankWidth + 1) + 10, 1), 0.0, 0.5));
+    for (int p = 0; p < planks; ++p) {
+        const Scalar centre = p * (plankWidth + 1);
+        world.bodies.push_back(withMaterial(
+            makeBox("plank" + std::to_string(p), 50.0, plankWidth, 0.2, Vec2(centre, 0.1)), 0.0, 0.5));
+        for (int b = 0; b < balls; ++b) {
+            const Vec2 at(centre - plankWidth / 2 + kSpacing * (b + 0.5), 0.2 + kRadius + 0.002 * (b % 7));
+            world.bodies.push_back(withMaterial(
+                makeBall("ball" + std::to_string(p) + "_" + std::to_string(b), 0.5, kRadius, at), 0.0, 0.5));
+        }
+    }
+    return world;
+}
+
 } // namespace impetus::testing
