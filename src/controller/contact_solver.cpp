@@ -151,6 +151,29 @@ std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<cons
     return approaching ? std::optional<Scalar>(fastest) : std::nullopt;
 }
 
+/// The effective-mass matrix K of a contact's normal impulses, 1/kg: for two points the 2×2 matrix
+/// of the block solve; for one, K₁₁ = 1/(its normal mass) and the rest 0.
+Eigen::Matrix2d normalK(const ContactConstraint& c, const SolverBody& a, const SolverBody& b)
+{
+    Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
+    const ContactConstraintPoint& p1 = c.points[0];
+    if (c.pointCount != 2) {
+        k(0, 0) = p1.normalMass > 0 ? 1 / p1.normalMass : 0;
+        return k;
+    }
+    const ContactConstraintPoint& p2 = c.points[1];
+    const Scalar rn1A = cross(p1.rA, c.normal);
+    const Scalar rn1B = cross(p1.rB, c.normal);
+    const Scalar rn2A = cross(p2.rA, c.normal);
+    const Scalar rn2B = cross(p2.rB, c.normal);
+    const Scalar m = a.invMass + b.invMass;
+    const Scalar k11 = m + a.invInertia * rn1A * rn1A + b.invInertia * rn1B * rn1B;
+    const Scalar k22 = m + a.invInertia * rn2A * rn2A + b.invInertia * rn2B * rn2B;
+    const Scalar k12 = m + a.invInertia * rn1A * rn2A + b.invInertia * rn1B * rn2B;
+    k << k11, k12, k12, k22;
+    return k;
+}
+
 /// Marks the movable ones of a contact's bodies as held by a contact force.
 void markContactForce(SolverBody& a, SolverBody& b)
 {
@@ -408,25 +431,8 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             c.points[static_cast<std::size_t>(i)].carriesLoad = loaded;
 
         if (c.pointCount == 2) {
-            const ContactConstraintPoint& p1 = c.points[0];
-            const ContactConstraintPoint& p2 = c.points[1];
-            const Scalar rn1A = cross(p1.rA, c.normal);
-            const Scalar rn1B = cross(p1.rB, c.normal);
-            const Scalar rn2A = cross(p2.rA, c.normal);
-            const Scalar rn2B = cross(p2.rB, c.normal);
-            const Scalar m = a.invMass + b.invMass;
-            const Scalar k11 = m + a.invInertia * rn1A * rn1A + b.invInertia * rn1B * rn1B;
-            const Scalar k22 = m + a.invInertia * rn2A * rn2A + b.invInertia * rn2B * rn2B;
-            const Scalar k12 = m + a.invInertia * rn1A * rn2A + b.invInertia * rn1B * rn2B;
-            c.k << k11, k12, k12, k22;
-            const Scalar det = k11 * k22 - k12 * k12;
-            if (k11 * k11 < kMaxBlockConditionNumber * det) {
-                c.blockSolve = true;
-                c.normalMassBlock = c.k.inverse();
-            }
-        } else {
-            const ContactConstraintPoint& p1 = c.points[0];
-            c.k(0, 0) = p1.normalMass > 0 ? 1 / p1.normalMass : 0;
+            const Eigen::Matrix2d twoPoint = normalK(c, a, b);
+            c.blockSolve = twoPoint(0, 0) * twoPoint(0, 0) < kMaxBlockConditionNumber * twoPoint.determinant();
         }
 
         // What solveImpacts() starts from, found while the constraint is at hand.
@@ -657,12 +663,14 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
             v.acted = false;
             v.normal = c.normal;
             v.friction = c.friction;
-            v.k11 = c.k(0, 0);
-            v.k12 = c.k(0, 1);
-            v.k22 = c.k(1, 1);
-            v.inverse11 = c.normalMassBlock(0, 0);
-            v.inverse12 = c.normalMassBlock(0, 1);
-            v.inverse22 = c.normalMassBlock(1, 1);
+            const Eigen::Matrix2d k = normalK(c, bodies[c.bodyA], bodies[c.bodyB]);
+            const Eigen::Matrix2d inverse = v.blockSolve ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
+            v.k11 = k(0, 0);
+            v.k12 = k(0, 1);
+            v.k22 = k(1, 1);
+            v.inverse11 = inverse(0, 0);
+            v.inverse12 = inverse(0, 1);
+            v.inverse22 = inverse(1, 1);
             for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
                 const ContactConstraintPoint& p = c.points[i];
                 VelocityPoint& q = v.points[i];

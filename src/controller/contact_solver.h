@@ -70,9 +70,8 @@ struct ContactConstraint {
     Scalar restitution = 0; ///< mixed e
     int pointCount = 0;
     std::array<ContactConstraintPoint, 2> points{};
-    Eigen::Matrix2d k = Eigen::Matrix2d::Zero(); ///< two-point effective-mass matrix
-    Eigen::Matrix2d normalMassBlock = Eigen::Matrix2d::Zero(); ///< its inverse
-    bool blockSolve = false; ///< the 2×2 block solve is well conditioned
+    /// Two points whose 2×2 effective-mass matrix is well conditioned, solved together.
+    bool blockSolve = false;
 };
 
 /// Mixing rule for two materials in contact: e = max(eA, eB), the bouncier surface wins, as when
