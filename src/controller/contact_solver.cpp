@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <utility>
 
 namespace impetus::controller {
 
@@ -305,93 +304,67 @@ Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
 
 void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
-                            std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
+                            std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
 {
-    // Empty manifolds (bounding boxes that overlap without contact) make no constraint. The others
-    // are numbered in order, and their bodies noted, before anything is built: that is all the
-    // partition and the colouring need, so a batched world's constraints can be built group by
-    // group, each written straight into its batch lane while it is at hand.
-    std::size_t count = 0;
-    for (const PairManifold& pm : manifolds)
-        count += pm.manifold.count > 0 ? 1 : 0;
-    m_constraints.resize(count);
-    m_constraintBodies.resize(count);
-    m_manifoldOf.resize(count);
-    m_buildOrder.resize(count);
-    std::uint32_t out = 0;
-    for (std::size_t k = 0; k < manifolds.size(); ++k) {
-        const PairManifold& pm = manifolds[k];
-        if (pm.manifold.count == 0)
-            continue;
-        m_manifoldOf[out] = static_cast<std::uint32_t>(k);
-        m_constraintBodies[out] = {pm.bodyA, pm.bodyB};
-        m_buildOrder[out] = out;
-        ++out;
-    }
+    // A large world's manifolds are split between two threads. Empty ones (bounding boxes that
+    // overlap without contact) make no constraint: counted first, so that each half writes its
+    // constraints straight to their final slots, in order.
+    const bool split = m_tasks && manifolds.size() >= constants::kParallelMinConstraints;
+    const std::size_t half = split ? manifolds.size() / 2 : manifolds.size();
+    const auto nonEmpty = [&](std::size_t begin, std::size_t end) {
+        return static_cast<std::size_t>(std::count_if(manifolds.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                      manifolds.begin() + static_cast<std::ptrdiff_t>(end),
+                                                      [](const PairManifold& pm) { return pm.manifold.count > 0; }));
+    };
+    const std::size_t firstCount = nonEmpty(0, half);
+    m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
+    m_constraintBodies.resize(m_constraints.size());
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
-    const bool split = m_tasks && count >= constants::kParallelMinConstraints;
     m_rotations.resize(bodies.size());
     const auto rotationsOf = [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
     };
+    const std::vector<model::ContactRecord>& previous = world.contacts;
+    const auto build = [&](std::size_t begin, std::size_t end, std::size_t out, int part) {
+        const auto up = static_cast<std::size_t>(part);
+        m_preparedCandidates[up].clear();
+        m_preparedPoints[up] = 0;
+        if (begin < end)
+            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end, out, h, up);
+    };
     if (split) {
         m_tasks->run([&](int part) {
             part == 0 ? rotationsOf(0, bodies.size() / 2) : rotationsOf(bodies.size() / 2, bodies.size());
         });
+        m_tasks->run([&](int part) {
+            part == 0 ? build(0, half, 0, 0) : build(half, manifolds.size(), firstCount, 1);
+        });
     } else {
         rotationsOf(0, bodies.size());
-    }
-    for (std::size_t part = 0; part < m_preparedCandidates.size(); ++part) {
-        m_preparedCandidates[part].clear();
-        m_preparedPoints[part] = 0;
-    }
-
-    partition(bodies);
-    const std::span<const std::uint32_t> order(m_buildOrder);
-    if (m_batched) {
-        m_batches.resize(m_batchLanes.size() / kBatchLanes);
-        m_positionBatches.resize(m_batches.size());
-        for (SolverBody& scratch : m_scratchBodies)
-            scratch = SolverBody{};
-        runGroups([&](int g) {
-            const auto ug = static_cast<std::size_t>(g);
-            buildConstraints(world, manifolds, bodies, derivatives, m_groups[ug], h, ug, true);
-            for (std::size_t lane = m_batchGroupStart[ug] * kBatchLanes; lane < m_batchGroupStart[ug + 1] * kBatchLanes; ++lane) {
-                if (m_batchLanes[lane] == kNoConstraint)
-                    packLane(bodies, h, ug, lane);
-            }
-        });
-    } else if (split) {
-        const std::size_t half = count / 2;
-        m_tasks->run([&](int part) {
-            const auto up = static_cast<std::size_t>(part);
-            buildConstraints(world, manifolds, bodies, derivatives, part == 0 ? order.first(half) : order.subspan(half), h,
-                             up, false);
-        });
-    } else {
-        buildConstraints(world, manifolds, bodies, derivatives, order, h, 0, false);
+        build(0, manifolds.size(), 0, 0);
+        build(0, 0, 0, 1);
     }
 }
 
 void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
-                                     std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
-                                     std::span<const std::uint32_t> constraints, Scalar h, std::size_t part, bool pack)
+                                     std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                                     const std::vector<model::ContactRecord>& previous, std::size_t begin,
+                                     std::size_t end, std::size_t out, Scalar h, std::size_t part)
 {
-    if (constraints.empty())
-        return;
-    // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB), and so are `constraints`: walk them
-    // together, from where this list starts.
-    const std::vector<model::ContactRecord>& previous = world.contacts;
-    const PairManifold& first = manifolds[m_manifoldOf[constraints.front()]];
+    // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
+    // range starts.
+    const PairManifold& first = manifolds[begin];
     const PairKey firstKey{first.ownerA, first.pieceA, first.ownerB, first.pieceB};
     std::size_t cursor = static_cast<std::size_t>(
         std::lower_bound(previous.begin(), previous.end(), firstKey,
                          [](const model::ContactRecord& r, const PairKey& key) { return keyOf(r) < key; }) -
         previous.begin());
-    for (const std::uint32_t index : constraints) {
-        const PairManifold& pm = manifolds[m_manifoldOf[index]];
-        ContactConstraint& c = m_constraints[index];
+    for (std::size_t k = begin; k < end; ++k) {
+        const PairManifold& pm = manifolds[k];
+        if (pm.manifold.count == 0)
+            continue;
+        ContactConstraint& c = m_constraints[out++];
         c = ContactConstraint{};
         c.bodyA = pm.bodyA;
         c.pieceA = pm.pieceA;
@@ -462,12 +435,12 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             c.blockSolve = twoPoint(0, 0) * twoPoint(0, 0) < kMaxBlockConditionNumber * twoPoint.determinant();
         }
 
-        // What solveImpacts() starts from, and the batch lane, while the constraint is at hand.
+        // What solveImpacts() starts from, found while the constraint is at hand.
+        const auto index = static_cast<std::uint32_t>(&c - m_constraints.data());
+        m_constraintBodies[index] = {c.bodyA, c.bodyB};
         m_preparedPoints[part] += static_cast<std::size_t>(c.pointCount);
         if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
             m_preparedCandidates[part].push_back({*fastest, index, 0});
-        if (pack)
-            packLane(bodies, h, part, m_laneOf[index]);
     }
 }
 
@@ -475,7 +448,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
-    const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1] + m_preparedPoints[2];
+    const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
     // The fastest approach first: a collision happens before the ones it causes. A heap holds the
@@ -668,8 +641,12 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
     // The velocity passes see only what they need, packed in solving order: a third of the
     // constraint's size, read front to back, eight times a step.
     if (m_batched) {
-        // prepare() packed the batches.
-        runGroups([&](int g) { warmStartBatches(batchesOf(static_cast<std::size_t>(g))); });
+        m_batches.resize(m_batchLanes.size() / kBatchLanes);
+        m_positionBatches.resize(m_batches.size());
+        runGroups([&](int g) {
+            packGroup(bodies, h, static_cast<std::size_t>(g));
+            warmStartBatches(batchesOf(static_cast<std::size_t>(g)));
+        });
         return;
     }
     m_velocityConstraints.resize(m_constraints.size());
@@ -902,7 +879,6 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
     // taken is solved on its own after the batches.
     constexpr int kColours = 64;
     m_batchLanes.clear();
-    m_laneOf.resize(m_constraints.size());
     m_colourMasks.resize(bodies.size());
     std::size_t batchCount = 0;
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
@@ -940,81 +916,89 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
         // A constraint that found every colour taken gets a batch of its own, after the others.
         m_batchLanes.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
         for (std::size_t k = 0; k < group.size(); ++k) {
-            const std::size_t lane = m_colourOf[k] < kColours ? firstLane[m_colourOf[k]]++ : std::exchange(lanes, lanes + kBatchLanes);
-            m_batchLanes[lane] = group[k];
-            m_laneOf[group[k]] = static_cast<std::uint32_t>(lane);
+            if (m_colourOf[k] < kColours) {
+                m_batchLanes[firstLane[m_colourOf[k]]++] = group[k];
+            } else {
+                m_batchLanes[lanes] = group[k];
+                lanes += kBatchLanes;
+            }
         }
         batchCount = lanes / kBatchLanes;
     }
     m_batchGroupStart[m_groups.size()] = batchCount;
 }
 
-void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex)
+void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g)
 {
-    // Every field of the lane is written, padding included: nothing is cleared first.
+    // Every field of every lane is written, padding included: clearing the batches first would
+    // cost as much again.
     SolverBody& scratch = m_scratchBodies[g];
+    scratch = SolverBody{};
     const auto scratchPose = static_cast<std::uint32_t>(bodies.size() + g);
-    const std::size_t bi = laneIndex / kBatchLanes;
-    const auto lane = static_cast<int>(laneIndex % kBatchLanes);
-    const auto ul = static_cast<std::size_t>(lane);
-    ContactBatch& batch = m_batches[bi];
-    PositionBatch& positions = m_positionBatches[bi];
-    const std::uint32_t ci = m_batchLanes[laneIndex];
-    // Padding is a contact without mass or normal between two bodies that cannot move; it never
-    // acts.
-    const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
-    const bool two = c && c->pointCount == 2;
-    const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
-                          std::array<SolverBody*, kBatchLanes>& write,
-                          std::array<std::uint32_t, kBatchLanes>& readPose,
-                          std::array<std::uint32_t, kBatchLanes>& writePose) {
-        const std::uint32_t index = c ? c->*body : 0;
-        const bool moves = c && movable(bodies[index]);
-        read[ul] = c ? &bodies[index] : &scratch;
-        write[ul] = moves ? &bodies[index] : &scratch;
-        readPose[ul] = c ? index : scratchPose;
-        writePose[ul] = moves ? index : scratchPose;
-    };
-    side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
-    side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
-    const SolverBody& a = *batch.bodyA[ul];
-    const SolverBody& b = *batch.bodyB[ul];
-    const Vec2 n = c ? c->normal : Vec2::Zero();
-    const Vec2 t = tangentOf(n);
-    batch.normalX[lane] = n.x();
-    batch.normalY[lane] = n.y();
-    batch.friction[lane] = c ? c->friction : 0;
-    positions.invMassA[lane] = a.invMass;
-    positions.invInertiaA[lane] = a.invInertia;
-    positions.invMassB[lane] = b.invMass;
-    positions.invInertiaB[lane] = b.invInertia;
-    // A one-point contact's second point has no arms and no mass: its impulse stays 0.
-    batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
-    const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
-    positions.localNormalX[lane] = localNormal.x();
-    positions.localNormalY[lane] = localNormal.y();
-    positions.secondPoint[lane] = two ? -1 : 0;
-    for (std::size_t i = 0; i < 2; ++i) {
-        const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
-        const ContactConstraintPoint none;
-        const ContactConstraintPoint& q = p ? *p : none;
-        BatchPoint& v = batch.points[i];
-        v.normalArmA[lane] = cross(q.rA, n);
-        v.normalArmB[lane] = cross(q.rB, n);
-        v.tangentArmA[lane] = cross(q.rA, t);
-        v.tangentArmB[lane] = cross(q.rB, t);
-        v.normalMass[lane] = q.normalMass;
-        v.tangentMass[lane] = q.tangentMass;
-        v.normalImpulse[lane] = q.normalImpulse;
-        v.tangentImpulse[lane] = q.tangentImpulse;
-        v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
-        PositionBatch::Anchors& anchors = positions.anchors[i];
-        anchors.ax[lane] = q.localAnchorA.x();
-        anchors.ay[lane] = q.localAnchorA.y();
-        anchors.bx[lane] = q.localAnchorB.x();
-        anchors.by[lane] = q.localAnchorB.y();
+    for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
+        ContactBatch& batch = m_batches[bi];
+        PositionBatch& positions = m_positionBatches[bi];
+        batch.acted = LaneMask{};
+        for (int lane = 0; lane < kBatchLanes; ++lane) {
+            const auto ul = static_cast<std::size_t>(lane);
+            const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
+            // Padding is a contact without mass or normal between two bodies that cannot move;
+            // it never acts.
+            const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
+            const bool two = c && c->pointCount == 2;
+            const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
+                                  std::array<SolverBody*, kBatchLanes>& write,
+                                  std::array<std::uint32_t, kBatchLanes>& readPose,
+                                  std::array<std::uint32_t, kBatchLanes>& writePose) {
+                const std::uint32_t index = c ? c->*body : 0;
+                const bool moves = c && movable(bodies[index]);
+                read[ul] = c ? &bodies[index] : &scratch;
+                write[ul] = moves ? &bodies[index] : &scratch;
+                readPose[ul] = c ? index : scratchPose;
+                writePose[ul] = moves ? index : scratchPose;
+            };
+            side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
+            side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
+            const SolverBody& a = *batch.bodyA[ul];
+            const SolverBody& b = *batch.bodyB[ul];
+            const Vec2 n = c ? c->normal : Vec2::Zero();
+            const Vec2 t = tangentOf(n);
+            batch.normalX[lane] = n.x();
+            batch.normalY[lane] = n.y();
+            batch.friction[lane] = c ? c->friction : 0;
+            positions.invMassA[lane] = a.invMass;
+            positions.invInertiaA[lane] = a.invInertia;
+            positions.invMassB[lane] = b.invMass;
+            positions.invInertiaB[lane] = b.invInertia;
+            // A one-point contact's second point has no arms or mass and can never close its gap:
+            // only the "first point alone" and "none" cases can hold, which is the one-point solve.
+            batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
+            const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
+            positions.localNormalX[lane] = localNormal.x();
+            positions.localNormalY[lane] = localNormal.y();
+            positions.secondPoint[lane] = two ? -1 : 0;
+            for (std::size_t i = 0; i < 2; ++i) {
+                const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
+                const ContactConstraintPoint none;
+                const ContactConstraintPoint& q = p ? *p : none;
+                BatchPoint& v = batch.points[i];
+                v.normalArmA[lane] = cross(q.rA, n);
+                v.normalArmB[lane] = cross(q.rB, n);
+                v.tangentArmA[lane] = cross(q.rA, t);
+                v.tangentArmB[lane] = cross(q.rB, t);
+                v.normalMass[lane] = q.normalMass;
+                v.tangentMass[lane] = q.tangentMass;
+                v.normalImpulse[lane] = q.normalImpulse;
+                v.tangentImpulse[lane] = q.tangentImpulse;
+                v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
+                PositionBatch::Anchors& anchors = positions.anchors[i];
+                anchors.ax[lane] = q.localAnchorA.x();
+                anchors.ay[lane] = q.localAnchorA.y();
+                anchors.bx[lane] = q.localAnchorB.x();
+                anchors.by[lane] = q.localAnchorB.y();
+            }
+        }
     }
-    batch.acted[lane] = 0;
 }
 
 void ContactSolver::runGroups(const std::function<void(int)>& solve)

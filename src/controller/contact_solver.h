@@ -125,8 +125,8 @@ public:
     /// start of the step, and
     /// `derivatives` their smooth-force derivatives, indexed alike (world bodies, then soft-grid
     /// ellipses: force_model.h, stateCount).
-    void prepare(const model::World& world, std::span<const PairManifold> manifolds, std::span<SolverBody> bodies,
-                 std::span<const BodyDerivative> derivatives, Scalar h);
+    void prepare(const model::World& world, std::span<const PairManifold> manifolds,
+                 std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h);
 
     /// Resolves the impacts of this step, in order of approach speed, on `bodies` (which hold the
     /// velocities from before this step's forces). Records each body's impact data. Returns the
@@ -142,8 +142,15 @@ public:
     void setBatchMinConstraints(std::size_t count) { m_batchMinConstraints = count; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
-    /// Starts the velocity passes: packs the constraints for them (a batched step's were packed by
-    /// prepare()) and applies last step's contact-force impulses (warm starting).
+    /// Orders the constraints for solving. A large world (constants::kParallelMinConstraints) is
+    /// cut into two halves that share no movable body, solved side by side on two threads, then
+    /// the constraints that join them; a small one keeps the broad phase's order. In a batched
+    /// step each of these groups is then coloured for the velocity passes: colour by colour,
+    /// kBatchLanes contacts at a time. The order, and so the result, depends only on the world,
+    /// not on how many threads the machine has.
+    void partition(std::span<const SolverBody> bodies);
+    /// Starts the velocity passes: packs the constraints for them and applies last step's
+    /// contact-force impulses (warm starting).
     void warmStart(std::span<SolverBody> bodies, Scalar h);
 
     /// One sequential-impulse pass over every contact: friction, then the normal constraints.
@@ -164,29 +171,22 @@ public:
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
     static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
-    /// prepare() for the listed constraints (ascending), each from its manifold: the approaching
-    /// ones and the point count go to `part` (0–2) of m_preparedCandidates and m_preparedPoints,
-    /// and with `pack` each is written into its batch lane (part is then its group).
+    /// prepare() for manifolds [begin, end): the non-empty ones' constraints go to m_constraints
+    /// from slot `out` on; the approaching ones and the point count go to `part` (0 or 1) of
+    /// m_preparedCandidates and m_preparedPoints.
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
-                          std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
-                          std::span<const std::uint32_t> constraints, Scalar h, std::size_t part, bool pack);
+                          std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                          const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end,
+                          std::size_t out, Scalar h, std::size_t part);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
     void forEachGroupIndex(const std::function<void(std::span<const std::uint32_t>, int)>& solve);
     void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
-    /// Orders the constraints for solving (prepare() calls it). A large world
-    /// (constants::kParallelMinConstraints) is cut into two halves that share no movable body, solved side by side on two threads, then
-    /// the constraints that join them; a small one keeps the broad phase's order. In a batched
-    /// step each of these groups is then coloured for the velocity passes: colour by colour,
-    /// kBatchLanes contacts at a time. The order, and so the result, depends only on the world,
-    /// not on how many threads the machine has.
-    void partition(std::span<const SolverBody> bodies);
     /// Colours the constraints of each group and lays out the batches' lanes (partition()).
     void colour(std::span<const SolverBody> bodies);
-    /// Fills one lane (index over all batches) of group g's batches from its constraint, or as
-    /// padding, for this step's velocity and position passes.
-    void packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex);
+    /// Fills group g's batches from the constraints, for this step's velocity and position passes.
+    void packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g);
     /// solvePositions() for a batched step.
     bool solvePositionsInBatches(std::span<SolverBody> bodies, bool turnedElsewhere);
     /// The batches of group g.
@@ -223,16 +223,13 @@ private:
     /// Each constraint's two solver bodies, packed: partition() and colour() read only these, and
     /// a walk over the whole constraints would touch a cache line per constraint.
     std::vector<std::array<std::uint32_t, 2>> m_constraintBodies;
-    std::vector<std::uint32_t> m_manifoldOf; ///< per constraint: its manifold
-    std::vector<std::uint32_t> m_buildOrder; ///< 0, 1, 2, …: every constraint, for an unbatched build
-    std::vector<std::uint32_t> m_laneOf; ///< per constraint of a batched step: its lane, over all batches
     std::vector<TimedImpulse> m_impulseTimeline;
     std::vector<std::uint32_t> m_lastTimedImpulse; ///< per body: its latest timeline entry
     std::vector<Candidate> m_candidates; ///< the impact heap
     /// The constraints approaching at the start of the step, and the number of contact points, as
-    /// prepare() found them in each part it built (a half, or a group).
-    std::array<std::vector<Candidate>, 3> m_preparedCandidates;
-    std::array<std::size_t, 3> m_preparedPoints{};
+    /// prepare() found them in each half of the manifolds.
+    std::array<std::vector<Candidate>, 2> m_preparedCandidates;
+    std::array<std::size_t, 2> m_preparedPoints{};
     std::vector<std::uint32_t> m_versions; ///< per constraint: bumped when it is looked at again
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
