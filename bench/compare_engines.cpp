@@ -6,6 +6,7 @@
 #include "peer_engines.h"
 #include "pose_quality.h"
 
+#include "controller/contact_batches.h"
 #include "controller/simulation.h"
 #include "model/example_scenes.h"
 
@@ -398,7 +399,12 @@ int main(int argc, char** argv)
               << (impetusSolver.secondThread ? "two for large worlds (docs/physics.md, \"Two threads\")" : "one (--one-thread)")
               << ". Sleeping is off in every engine.\n"
               << "Impetus: " << impetusSolver.velocityIterations << " velocity / " << impetusSolver.positionIterations
-              << " position iterations (controller::Simulation defaults), double.\n"
+              << " position iterations (controller::Simulation defaults), double; "
+              << (options->noBatches ? std::string("one contact at a time (--no-batches)")
+                                     : "worlds of " + std::to_string(impetusSolver.batchMinConstraints) +
+                                           " contacts or more in batches of four (" + controller::batchInstructions() +
+                                           " on this processor)")
+              << ".\n"
               << "Box2D: " << kBox2dVelocityIterations << " velocity / " << kBox2dPositionIterations
               << " position iterations, float.\n"
               << "Chipmunk: " << kChipmunkIterations << " iterations, collision slop " << kChipmunkCollisionSlop

@@ -135,6 +135,8 @@ constexpr Scalar kSmallTurn = 0.05;
 // target: GCC miscompiles calls from an AVX2 function to a plain one that take vector arguments at
 // -O0 (AddressSanitizer caught it reading past a local).
 
+const char* batchInstructions() { return __builtin_cpu_supports("avx2") ? "AVX2" : "SSE2"; }
+
 // Two versions of each pass are compiled: one for processors with AVX2, whose 256-bit registers
 // hold a whole batch, and one for any x86-64. The processor picks at load time. Both do the same
 // IEEE arithmetic lane by lane (no fused multiply-add), so they give the same bits.

@@ -100,6 +100,9 @@ struct PositionBatch {
     std::array<std::uint32_t, kBatchLanes> writeB{};
 };
 
+/// The instructions the batch passes run with on this processor: "AVX2", or "SSE2" (the same bits).
+const char* batchInstructions();
+
 /// Applies every lane's accumulated impulses to its bodies (warm starting).
 void warmStartBatches(std::span<ContactBatch> batches);
 
