@@ -320,11 +320,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
     m_constraintBodies.resize(m_constraints.size());
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
-    m_rotations.resize(bodies.size());
-    const auto rotationsOf = [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-            m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
-    };
+    computeRotations(bodies, split);
     const std::vector<model::ContactRecord>& previous = world.contacts;
     const auto build = [&](std::size_t begin, std::size_t end, std::size_t out, int part) {
         const auto up = static_cast<std::size_t>(part);
@@ -335,13 +331,9 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     };
     if (split) {
         m_tasks->run([&](int part) {
-            part == 0 ? rotationsOf(0, bodies.size() / 2) : rotationsOf(bodies.size() / 2, bodies.size());
-        });
-        m_tasks->run([&](int part) {
             part == 0 ? build(0, half, 0, 0) : build(half, manifolds.size(), firstCount, 1);
         });
     } else {
-        rotationsOf(0, bodies.size());
         build(0, manifolds.size(), 0, 0);
         build(0, 0, 0, 1);
     }
@@ -760,19 +752,8 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElse
     // Each pass keeps the sines and cosines of the bodies it turns up to date, so they need
     // computing afresh only when something else has turned bodies since: a large world's thousands
     // of them cost as much as a pass.
-    if (turnedElsewhere || m_rotations.size() != bodies.size()) {
-        m_rotations.resize(bodies.size());
-        const auto rotationsOf = [&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i)
-                m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
-        };
-        if (m_split && m_tasks) {
-            const std::size_t half = bodies.size() / 2;
-            m_tasks->run([&](int part) { part == 0 ? rotationsOf(0, half) : rotationsOf(half, bodies.size()); });
-        } else {
-            rotationsOf(0, bodies.size());
-        }
-    }
+    if (turnedElsewhere)
+        computeRotations(bodies, m_split);
     std::array<Scalar, 3> deepest{};
     forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
         for (const std::uint32_t ci : group)
@@ -790,15 +771,9 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
     // may have moved them; the passes keep both up to date, and hand the poses back after each
     // pass. Each half of a split world does its own bodies.
     const std::size_t count = bodies.size();
-    const auto overBodies = [&](const std::function<void(std::size_t, std::size_t)>& work) {
-        if (m_split && m_tasks)
-            m_tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
-        else
-            work(0, count);
-    };
     if (turnedElsewhere || m_poses.size() != count + m_scratchBodies.size()) {
         m_poses.resize(count + m_scratchBodies.size());
-        overBodies([&](std::size_t begin, std::size_t end) {
+        overBodyHalves(m_split, count, [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const SolverBody& body = bodies[i];
                 m_poses[i] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
@@ -813,7 +788,7 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
                                                .subspan(m_batchGroupStart[ug], m_batchGroupStart[ug + 1] - m_batchGroupStart[ug]),
                                            m_poses);
     });
-    overBodies([&](std::size_t begin, std::size_t end) {
+    overBodyHalves(m_split, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             if (!movable(bodies[i]))
                 continue;
@@ -999,6 +974,24 @@ void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_
             }
         }
     }
+}
+
+void ContactSolver::overBodyHalves(bool split, std::size_t count,
+                                   const std::function<void(std::size_t, std::size_t)>& work)
+{
+    if (split && m_tasks)
+        m_tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
+    else
+        work(0, count);
+}
+
+void ContactSolver::computeRotations(std::span<const SolverBody> bodies, bool split)
+{
+    m_rotations.resize(bodies.size());
+    overBodyHalves(split, bodies.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            m_rotations[i] = Vec2(std::cos(bodies[i].angle), std::sin(bodies[i].angle));
+    });
 }
 
 void ContactSolver::runGroups(const std::function<void(int)>& solve)

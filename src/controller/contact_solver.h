@@ -178,6 +178,11 @@ private:
                           std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                           const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end,
                           std::size_t out, Scalar h, std::size_t part);
+    /// Runs work(begin, end) over the body indices [0, count): in two halves side by side when
+    /// `split` and there is a second thread, else all at once. Each index is written by one half.
+    void overBodyHalves(bool split, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
+    /// Fills m_rotations with every body's (cos, sin) of its angle.
+    void computeRotations(std::span<const SolverBody> bodies, bool split);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
