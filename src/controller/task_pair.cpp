@@ -13,6 +13,11 @@ void waitUntilAtLeast(const std::atomic<std::uint64_t>& value, std::uint64_t tar
     for (int i = 0; i < constants::kTaskSpinCount; ++i) {
         if (value.load(std::memory_order_acquire) >= target)
             return;
+#if defined(__x86_64__) || defined(__i386__)
+        // Tells the processor this is a wait loop: it stops speculating down the loop, and a
+        // sibling hardware thread gets the core's resources meanwhile.
+        __builtin_ia32_pause();
+#endif
     }
     for (;;) {
         const std::uint64_t now = value.load(std::memory_order_acquire);
