@@ -4,8 +4,10 @@
 /// contacts began (counted), and a log of each new collision.
 
 #include "controller/contact_solver.h"
+#include "controller/task_pair.h"
 #include "model/world.h"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -31,15 +33,21 @@ struct CollisionEvent {
 struct CollisionScratch {
     /// Body pairs (A < B) that touched at the end of the last step, sorted.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> touchedBefore;
+    /// Per body: 1 when it touches another at the end of this step.
+    std::vector<std::uint8_t> colliding;
+    /// The events each half of the records found, in record order.
+    std::array<std::vector<CollisionEvent>, 2> found;
 };
 
-/// Decides which contacts touch, sets each body's `colliding` flag, counts contact-begin events
-/// (per pair of bodies, whatever the number of pieces or points) into the bodies' and the world's
-/// collision counts, and stores the step's contact records in world.contacts.
-/// `bodies` hold the velocities after the solve. `previous` are the last step's records.
-/// Appends the events of the step, in pair order, to `events`.
+/// Sets each body's `colliding` flag from this step's contact records and counts contact-begin
+/// events (per pair of bodies, whatever the number of pieces or points) into the bodies' and the
+/// world's collision counts. world.contacts must already hold this step's records, one per
+/// constraint of `contacts` in the same order (ContactSolver::swapRecords). `bodies` hold the
+/// velocities after the solve. `previous` are the last step's records.
+/// Appends the events of the step, in pair order, to `events`. With `tasks`, a large world's
+/// flags are written from two threads (the same results).
 void updateCollisionState(model::World& world, const ContactSolver& contacts, std::span<const SolverBody> bodies,
                           const std::vector<model::ContactRecord>& previous, CollisionScratch& scratch,
-                          std::vector<CollisionEvent>& events);
+                          std::vector<CollisionEvent>& events, TaskPair* tasks = nullptr);
 
 } // namespace impetus::controller

@@ -297,7 +297,37 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
     return deepest;
 }
 
+/// The record of a constraint whose impulses are final: its pieces, its points' feature ids and
+/// impulses, and whether it touches (isTouching).
+void writeRecord(const ContactConstraint& c, model::ContactRecord& r)
+{
+    r.bodyA = model::BodyId{c.ownerA};
+    r.pieceA = c.pieceA;
+    r.bodyB = model::BodyId{c.ownerB};
+    r.pieceB = c.pieceB;
+    r.pointCount = static_cast<std::uint8_t>(c.pointCount);
+    r.featureIds = {};
+    r.normalImpulses = {};
+    r.tangentImpulses = {};
+    for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+        r.featureIds[i] = c.points[i].id;
+        r.normalImpulses[i] = c.points[i].normalImpulse;
+        r.tangentImpulses[i] = c.points[i].tangentImpulse;
+    }
+    r.touching = isTouching(c);
+}
+
 } // namespace
+
+bool isTouching(const ContactConstraint& c)
+{
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+        if (p.separation <= constants::kTouchDistance || p.normalImpulse > 0 || p.impactImpulse > 0)
+            return true;
+    }
+    return false;
+}
 
 Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 
@@ -712,6 +742,7 @@ void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 
 void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 {
+    m_records.resize(m_constraints.size());
     if (!m_batched) {
         std::size_t slot = 0;
         for (const std::vector<std::uint32_t>& group : m_groups) {
@@ -724,6 +755,7 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
                 }
                 if (v.acted)
                     markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
+                writeRecord(c, m_records[ci]);
             }
         }
         return;
@@ -745,6 +777,7 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
                 }
                 if (batch.acted[lane] != 0)
                     markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
+                writeRecord(c, m_records[ci]);
             }
         }
     });

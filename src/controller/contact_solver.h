@@ -74,6 +74,10 @@ struct ContactConstraint {
     bool blockSolve = false;
 };
 
+/// A contact touches when a point is within the touch distance, or when any impulse acted on it
+/// this step (a speculative contact that stopped a fast body a hair before the surface touched).
+bool isTouching(const ContactConstraint& c);
+
 /// Mixing rule for two materials in contact: e = max(eA, eB), the bouncier surface wins, as when
 /// a rubber ball bounces on a hard floor; μ = √(μA·μB), which gives exactly μ when both are μ.
 Scalar mixRestitution(Scalar a, Scalar b);
@@ -155,9 +159,14 @@ public:
 
     /// One sequential-impulse pass over every contact: friction, then the normal constraints.
     void solveVelocities(std::span<SolverBody> bodies);
-    /// Ends the velocity passes: keeps their impulses in constraints() and marks the bodies that a
-    /// contact force acted on.
+    /// Ends the velocity passes: keeps their impulses in constraints(), writes this step's contact
+    /// records (what the next step warm-starts from) and marks the bodies that a contact force
+    /// acted on.
     void finishVelocities(std::span<SolverBody> bodies);
+
+    /// Exchanges the contact records finishVelocities() wrote, one per constraint in the same
+    /// order, for `records`, whose old contents this solver then overwrites at the next step.
+    void swapRecords(std::vector<model::ContactRecord>& records) { m_records.swap(records); }
 
     /// One non-linear Gauss–Seidel pass on positions. `turnedElsewhere`: bodies may have turned
     /// since this solver's last pass (the first pass of a step, or joints in between). Returns
@@ -225,6 +234,9 @@ private:
                             const Vec2& impulse, std::span<SolverBody> bodies);
 
     std::vector<ContactConstraint> m_constraints;
+    /// This step's contact records, written with the impulses in finishVelocities(), while each
+    /// constraint is at hand (see swapRecords).
+    std::vector<model::ContactRecord> m_records;
     /// Each constraint's two solver bodies, packed: partition() and colour() read only these, and
     /// a walk over the whole constraints would touch a cache line per constraint.
     std::vector<std::array<std::uint32_t, 2>> m_constraintBodies;

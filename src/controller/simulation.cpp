@@ -422,10 +422,12 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start).
     world.time = endTime;
     const Clock::time_point eventsStart = Clock::now();
-    // The last step's records move aside and their buffer takes this step's: two buffers take
-    // turns, so a large world's records are not allocated afresh every step.
+    // The last step's records move aside, and the solver's records of this step take their place
+    // (ContactSolver::finishVelocities wrote them): three buffers take turns, so a large world's
+    // records are not allocated afresh every step.
     m_previousContacts.swap(world.contacts);
-    updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts, m_collisionScratch, m_events);
+    m_contactSolver.swapRecords(world.contacts);
+    updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts, m_collisionScratch, m_events, m_tasks.get());
     m_profile.eventsMs += millisecondsSince(eventsStart);
     m_jointSolver.storeImpulses(world);
 }

@@ -93,11 +93,30 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     SolverSettings single = settingsUnderTest();
     single.secondThread = false;
     Simulation withoutThread(single);
+    std::size_t events = 0;
     for (int i = 0; i < 120; ++i) {
         withThread.step(twoThreads);
         withoutThread.step(oneThread);
+        // The collision log too: each half of the records finds its own events, and together they
+        // must be the one-thread list, in the same order.
+        ASSERT_EQ(withThread.events().size(), withoutThread.events().size()) << "step " << i;
+        for (std::size_t k = 0; k < withThread.events().size(); ++k) {
+            const CollisionEvent& two = withThread.events()[k];
+            const CollisionEvent& one = withoutThread.events()[k];
+            EXPECT_EQ(two.bodyA, one.bodyA);
+            EXPECT_EQ(two.bodyB, one.bodyB);
+            EXPECT_EQ(two.point, one.point);
+            EXPECT_EQ(two.normal, one.normal);
+            EXPECT_EQ(two.normalImpulse, one.normalImpulse);
+            EXPECT_EQ(two.normalSpeedBefore, one.normalSpeedBefore);
+            EXPECT_EQ(two.normalSpeedAfter, one.normalSpeedAfter);
+        }
+        events += withThread.events().size();
     }
     ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
+    // The pyramid is built touching, so every touching pair begins in the first step.
+    EXPECT_GE(events, static_cast<std::size_t>(withThread.profile().contacts));
+    EXPECT_EQ(twoThreads.collisionCount, static_cast<std::int64_t>(events));
     EXPECT_EQ(twoThreads, oneThread);
 }
 
