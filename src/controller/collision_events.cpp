@@ -139,15 +139,10 @@ void updateCollisionState(model::World& world, const ContactSolver& contacts, st
     for (const std::vector<CollisionEvent>& half : found)
         events.insert(events.end(), half.begin(), half.end());
 
-    const auto setFlags = [&](std::size_t begin, std::size_t end) {
+    inHalves(split ? tasks : nullptr, world.bodies.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             world.bodies[i].colliding = colliding[i] != 0;
-    };
-    const std::size_t bodyCount = world.bodies.size();
-    if (split)
-        tasks->run([&](int part) { part == 0 ? setFlags(0, bodyCount / 2) : setFlags(bodyCount / 2, bodyCount); });
-    else
-        setFlags(0, bodyCount);
+    });
     for (std::size_t k = firstEvent; k < events.size(); ++k) {
         ++world.bodies[events[k].bodyA.index].collisionCount;
         ++world.bodies[events[k].bodyB.index].collisionCount;

@@ -1020,10 +1020,7 @@ void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_
 void ContactSolver::overBodyHalves(bool split, std::size_t count,
                                    const std::function<void(std::size_t, std::size_t)>& work)
 {
-    if (split && m_tasks)
-        m_tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
-    else
-        work(0, count);
+    inHalves(split ? m_tasks : nullptr, count, work);
 }
 
 void ContactSolver::computeRotations(std::span<const SolverBody> bodies, bool split)

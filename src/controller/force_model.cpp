@@ -297,23 +297,27 @@ std::size_t stateCount(const model::World& world)
     return count;
 }
 
-void gatherStates(const model::World& world, std::vector<model::BodyState>& out)
+void gatherStates(const model::World& world, std::vector<model::BodyState>& out, TaskPair* tasks)
 {
-    out.clear();
-    out.reserve(stateCount(world));
-    for (const model::Body& body : world.bodies)
-        out.push_back(body.state);
+    out.resize(stateCount(world));
+    inHalves(tasks, world.bodies.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            out[i] = world.bodies[i].state;
+    });
+    std::size_t k = world.bodies.size();
     for (const model::SoftGrid& grid : world.softBodies) {
         for (std::size_t i = 0; i < grid.size(); ++i)
-            out.push_back(model::BodyState{grid.positions[i], 0, grid.velocities[i], 0});
+            out[k++] = model::BodyState{grid.positions[i], 0, grid.velocities[i], 0};
     }
 }
 
-void scatterStates(model::World& world, std::span<const model::BodyState> states)
+void scatterStates(model::World& world, std::span<const model::BodyState> states, TaskPair* tasks)
 {
-    std::size_t k = 0;
-    for (model::Body& body : world.bodies)
-        body.state = states[k++];
+    inHalves(tasks, world.bodies.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            world.bodies[i].state = states[i];
+    });
+    std::size_t k = world.bodies.size();
     for (model::SoftGrid& grid : world.softBodies) {
         for (std::size_t i = 0; i < grid.size(); ++i, ++k) {
             grid.positions[i] = states[k].position;

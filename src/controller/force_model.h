@@ -3,6 +3,7 @@
 /// The smooth forces of a world: gravity, Hooke springs with damping, and Stokes drag.
 /// Fixed bodies feel nothing.
 
+#include "controller/task_pair.h"
 #include "model/scalar.h"
 #include "model/world.h"
 
@@ -38,11 +39,13 @@ struct ForceScratch {
 /// uses position and velocity only; its angle and angular velocity stay zero.
 std::size_t stateCount(const model::World& world);
 
-/// Copies the world's state list into `out` (resized to stateCount(world)).
-void gatherStates(const model::World& world, std::vector<model::BodyState>& out);
+/// Copies the world's state list into `out` (resized to stateCount(world)). With `tasks`, the
+/// bodies' states are copied in two halves on two threads.
+void gatherStates(const model::World& world, std::vector<model::BodyState>& out, TaskPair* tasks = nullptr);
 
-/// Writes a state list back into the world: bodies' states and the grids' ellipses.
-void scatterStates(model::World& world, std::span<const model::BodyState> states);
+/// Writes a state list back into the world: bodies' states and the grids' ellipses. With `tasks`,
+/// the bodies' states are written in two halves on two threads.
+void scatterStates(model::World& world, std::span<const model::BodyState> states, TaskPair* tasks = nullptr);
 
 /// World positions of a spring's two ends when the bodies are in `states` (states[i] belongs to
 /// world.bodies[i]), m.

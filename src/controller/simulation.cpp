@@ -44,24 +44,31 @@ Integrator& Simulation::integratorFor(model::IntegratorKind kind)
     return *m_rk4;
 }
 
+TaskPair* Simulation::bodyTasks(const model::World& world) const
+{
+    return world.bodies.size() >= constants::kParallelMinBodies ? m_tasks.get() : nullptr;
+}
+
 void Simulation::setUpSolverBodies(const model::World& world)
 {
     const std::size_t n = world.bodies.size();
     m_bodies.resize(m_startStates.size());
     m_entries.resize(m_startStates.size());
-    for (std::size_t i = 0; i < n; ++i) {
-        const model::Body& body = world.bodies[i];
-        m_entries[i] = body.fixed ? Entry::Fixed : Entry::Rigid;
-        SolverBody& sb = m_bodies[i];
-        sb = SolverBody{};
-        sb.position = body.state.position;
-        sb.angle = body.state.angle;
-        sb.invMass = body.invMass;
-        sb.invInertia = body.invInertia;
-        // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
-        sb.velocity = body.state.velocity;
-        sb.angularVelocity = body.state.angularVelocity;
-    }
+    inHalves(bodyTasks(world), n, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const model::Body& body = world.bodies[i];
+            m_entries[i] = body.fixed ? Entry::Fixed : Entry::Rigid;
+            SolverBody& sb = m_bodies[i];
+            sb = SolverBody{};
+            sb.position = body.state.position;
+            sb.angle = body.state.angle;
+            sb.invMass = body.invMass;
+            sb.invInertia = body.invInertia;
+            // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
+            sb.velocity = body.state.velocity;
+            sb.angularVelocity = body.state.angularVelocity;
+        }
+    });
     // A soft body's own solver body is its grid's aggregate: only joints act on it (contacts act
     // on the ellipses), and what they do is handed on to the ellipses (shareJointMotion).
     m_softAggregates.resize(world.softBodies.size());
@@ -249,7 +256,7 @@ void Simulation::findPairsWithSoftBodies(const model::World& world)
     std::sort(m_pairs.begin(), m_pairs.end());
 }
 
-void Simulation::integratePositions(Scalar h)
+void Simulation::integratePositions(const model::World& world, Scalar h)
 {
     // Two ways to finish a body's step (docs/physics.md, "Contacts"):
     //  - bodies held by contact forces or joints: semi-implicit Euler, x = x₀ + h·v, the
@@ -258,35 +265,41 @@ void Simulation::integratePositions(Scalar h)
     //    what their impacts changed after the time of impact.
     // Either way an impact at τ·h moves the body only for the remaining (1 − τ)·h. Soft grids'
     // ellipses are finished the same way; a soft body's own entry follows its grid afterwards.
-    for (std::size_t i = 0; i < m_endStates.size(); ++i) {
-        SolverBody& sb = m_bodies[i];
-        model::BodyState& s = m_endStates[i];
-        if (m_entries[i] == Entry::Fixed) {
-            // The integrator moved it with its own velocity; position correction must see that.
-            sb.position = s.position;
-            sb.angle = s.angle;
-            continue;
-        }
-        if (m_entries[i] == Entry::SoftOwner)
-            continue;
-        const model::BodyState& start = m_startStates[i];
-        if (sb.hadContactForce) {
-            // Until its first impact the body moved with its start velocity, then with its final
-            // one. (Written with the final velocity alone, an impact that a contact force then
-            // cancels would still move the body.)
-            const Scalar tau = sb.hadImpact ? sb.firstImpactTau : 0.0;
-            s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity);
-            s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity);
-        } else if (sb.hadImpact) {
-            // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
-            s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);
-            s.angle += h * (sb.angularVelocity - s.angularVelocity - sb.impactLateAngularVelocity);
-        }
-        s.velocity = sb.velocity;
-        s.angularVelocity = sb.angularVelocity;
+    inHalves(bodyTasks(world), m_endStates.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            finishBodyPosition(i, h);
+    });
+}
+
+void Simulation::finishBodyPosition(std::size_t i, Scalar h)
+{
+    SolverBody& sb = m_bodies[i];
+    model::BodyState& s = m_endStates[i];
+    if (m_entries[i] == Entry::Fixed) {
+        // The integrator moved it with its own velocity; position correction must see that.
         sb.position = s.position;
         sb.angle = s.angle;
+        return;
     }
+    if (m_entries[i] == Entry::SoftOwner)
+        return;
+    const model::BodyState& start = m_startStates[i];
+    if (sb.hadContactForce) {
+        // Until its first impact the body moved with its start velocity, then with its final
+        // one. (Written with the final velocity alone, an impact that a contact force then
+        // cancels would still move the body.)
+        const Scalar tau = sb.hadImpact ? sb.firstImpactTau : 0.0;
+        s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity);
+        s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity);
+    } else if (sb.hadImpact) {
+        // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
+        s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);
+        s.angle += h * (sb.angularVelocity - s.angularVelocity - sb.impactLateAngularVelocity);
+    }
+    s.velocity = sb.velocity;
+    s.angularVelocity = sb.angularVelocity;
+    sb.position = s.position;
+    sb.angle = s.angle;
 }
 
 void Simulation::syncSoftAggregates(const model::World& world)
@@ -348,7 +361,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     const std::size_t total = stateCount(world);
 
     // Phase 0: the start of the step, as the solvers see it.
-    gatherStates(world, m_startStates);
+    gatherStates(world, m_startStates, bodyTasks(world));
     setUpSolverBodies(world);
     computeDerivatives(world, m_startStates, m_startDerivatives, m_forceScratch);
 
@@ -374,13 +387,15 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
 
     // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
     const Clock::time_point velocityStart = Clock::now();
-    for (std::size_t i = 0; i < total; ++i) {
-        if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
-            continue;
-        SolverBody& sb = m_bodies[i];
-        sb.velocity += m_endStates[i].velocity - m_startStates[i].velocity;
-        sb.angularVelocity += m_endStates[i].angularVelocity - m_startStates[i].angularVelocity;
-    }
+    inHalves(bodyTasks(world), total, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
+                continue;
+            SolverBody& sb = m_bodies[i];
+            sb.velocity += m_endStates[i].velocity - m_startStates[i].velocity;
+            sb.angularVelocity += m_endStates[i].angularVelocity - m_startStates[i].angularVelocity;
+        }
+    });
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         syncSoftAggregates(world);
     m_jointSolver.warmStart(m_bodies);
@@ -396,7 +411,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     const Clock::time_point positionStart = Clock::now();
 
     // Phase 5: positions, then position correction (moves bodies, never touches velocities).
-    integratePositions(h);
+    integratePositions(world, h);
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         syncSoftAggregates(world);
     for (int i = 0; i < m_settings.positionIterations; ++i) {
@@ -407,14 +422,16 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     }
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         shareJointMotion(world, true);
-    for (std::size_t i = 0; i < total; ++i) {
-        if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
-            continue;
-        m_endStates[i].position = m_bodies[i].position;
-        m_endStates[i].angle = m_bodies[i].angle;
-    }
+    inHalves(bodyTasks(world), total, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)
+                continue;
+            m_endStates[i].position = m_bodies[i].position;
+            m_endStates[i].angle = m_bodies[i].angle;
+        }
+    });
     m_profile.positionMs += millisecondsSince(positionStart);
-    scatterStates(world, m_endStates);
+    scatterStates(world, m_endStates, bodyTasks(world));
     updateSoftOwners(world);
     solveMs += millisecondsSince(velocityStart);
     m_profile.solveMs += solveMs;

@@ -82,7 +82,11 @@ private:
     void collide(const model::World& world, Scalar h);
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
     void findPairsWithSoftBodies(const model::World& world);
-    void integratePositions(Scalar h);
+    void integratePositions(const model::World& world, Scalar h);
+    /// integratePositions for state i (docs/physics.md, "Contacts").
+    void finishBodyPosition(std::size_t i, Scalar h);
+    /// The second thread for loops over a large world's bodies, or null for a small world.
+    TaskPair* bodyTasks(const model::World& world) const;
     /// Sets each soft body's solver body (and m_softAggregates) to the aggregate of its
     /// ellipses' solver bodies: where the joints see it.
     void syncSoftAggregates(const model::World& world);

@@ -83,4 +83,12 @@ void TaskPair::workerLoop()
     }
 }
 
+void inHalves(TaskPair* tasks, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work)
+{
+    if (tasks)
+        tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
+    else
+        work(0, count);
+}
+
 } // namespace impetus::controller

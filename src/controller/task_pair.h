@@ -4,6 +4,7 @@
 /// work on two halves of a large world side by side (docs/physics.md, "Two threads").
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <thread>
@@ -41,5 +42,10 @@ private:
     std::atomic<std::uint64_t> m_done{0};
     std::atomic<bool> m_stop{false};
 };
+
+/// Runs work(0, count / 2) and work(count / 2, count) on two threads when `tasks` is given, or
+/// work(0, count) on this one. For loops whose iterations touch disjoint data, so that either way
+/// gives the same bits.
+void inHalves(TaskPair* tasks, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
 
 } // namespace impetus::controller
