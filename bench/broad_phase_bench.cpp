@@ -1,5 +1,7 @@
 // Cost of one BroadPhase::findPairs call on the benchmark scenes, at rest (the order kept from the
-// last call is exactly right) and from scratch (a new BroadPhase each time, so std::sort runs).
+// last call is exactly right) and from scratch (a new BroadPhase each time, so std::sort runs);
+// and with every box moved a little between calls (a pile settling: the input is never the same
+// twice) or a lot (rain falling: every box leaves where it was).
 // Run: build/bench/bench/impetus-bench-broad-phase
 
 #include "controller/broad_phase.h"
@@ -71,6 +73,47 @@ void findPairs(benchmark::State& state, const std::vector<controller::BroadPhase
     state.counters["pairs"] = static_cast<double>(pairs.size());
 }
 
+/// Copies of `proxies`, each box moved by its own random offset of up to `step` on each axis from
+/// the first copy, `step` again from the second, and so on, so that consecutive copies differ by
+/// about `step` per box.
+std::vector<std::vector<controller::BroadPhaseProxy>> moved(const std::vector<controller::BroadPhaseProxy>& proxies,
+                                                            Scalar step, int copies)
+{
+    std::mt19937 random(2);
+    const auto offset = [&] { return step * (2 * static_cast<Scalar>(random()) / 4294967296.0 - 1); };
+    std::vector<std::vector<controller::BroadPhaseProxy>> frames(1, proxies);
+    for (int c = 1; c < copies; ++c) {
+        frames.push_back(frames.back());
+        for (controller::BroadPhaseProxy& proxy : frames.back()) {
+            const Vec2 move(offset(), offset());
+            proxy.box.lower += move;
+            proxy.box.upper += move;
+        }
+    }
+    return frames;
+}
+
+/// One call per frame, the frames in turn (back and forth, so that no jump is larger than `step`).
+void findPairsMoving(benchmark::State& state, const std::vector<controller::BroadPhaseProxy>& proxies, Scalar step)
+{
+    constexpr int kFrames = 8;
+    const std::vector<std::vector<controller::BroadPhaseProxy>> frames = moved(proxies, step, kFrames);
+    controller::BroadPhase broadPhase;
+    std::vector<controller::ProxyPair> pairs;
+    broadPhase.findPairs(frames[0], pairs);
+    int frame = 0;
+    int direction = 1;
+    for (auto _ : state) {
+        if (frame + direction < 0 || frame + direction >= kFrames)
+            direction = -direction;
+        frame += direction;
+        broadPhase.findPairs(frames[static_cast<std::size_t>(frame)], pairs);
+        benchmark::DoNotOptimize(pairs.data());
+    }
+    state.counters["proxies"] = static_cast<double>(proxies.size());
+    state.counters["pairs"] = static_cast<double>(pairs.size());
+}
+
 const std::vector<controller::BroadPhaseProxy>& pyramid()
 {
     static const auto proxies = proxiesOf(model::makePyramid(100));
@@ -102,6 +145,16 @@ void BM_PyramidGrid20x20(benchmark::State& state) { findPairs(state, pyramidGrid
 void BM_PolygonRain1000(benchmark::State& state) { findPairs(state, rain(), state.range(0) != 0); }
 void BM_RotatingBox2000(benchmark::State& state) { findPairs(state, tumbler(), state.range(0) != 0); }
 void BM_SpreadApart10000(benchmark::State& state) { findPairs(state, scattered(), state.range(0) != 0); }
+// Arg: the move between calls in µm, 1 µm (a resting pile's jitter) to 0.3 m (more than a box's
+// fat margin: rain falling).
+void BM_Pyramid100Moving(benchmark::State& state)
+{
+    findPairsMoving(state, pyramid(), 1e-6 * static_cast<Scalar>(state.range(0)));
+}
+void BM_PolygonRain1000Moving(benchmark::State& state)
+{
+    findPairsMoving(state, rain(), 1e-6 * static_cast<Scalar>(state.range(0)));
+}
 
 // Arg 1: warm (the kept order is right); arg 0: cold (sorted from scratch).
 BENCHMARK(BM_Pyramid100)->ArgName("warm")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
@@ -109,5 +162,7 @@ BENCHMARK(BM_PyramidGrid20x20)->ArgName("warm")->Arg(1)->Arg(0)->Unit(benchmark:
 BENCHMARK(BM_PolygonRain1000)->ArgName("warm")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RotatingBox2000)->ArgName("warm")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SpreadApart10000)->ArgName("warm")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Pyramid100Moving)->ArgName("um")->Arg(1)->Arg(1000)->Arg(300000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PolygonRain1000Moving)->ArgName("um")->Arg(1000)->Arg(300000)->Unit(benchmark::kMicrosecond);
 
 } // namespace

@@ -178,9 +178,68 @@ void sortPairs(std::vector<ProxyPair>& pairs, std::size_t proxyCount, std::vecto
     }
 }
 
+/// The box enlarged on every side by kBroadPhaseFatFraction of its smaller side. Scaled by the box
+/// so that a pebble and a boulder both get room for a few steps of their own jitter, and by the
+/// smaller side so that a long ground or wall does not get a margin as large as the boxes on it.
+/// The margin is zero when it would not be finite (an infinite box), and a box with a NaN stays as
+/// it is, so that the sweep leaves it out as it would the box itself. The lower corner is taken
+/// as the smaller of the two corners (the larger for the upper), so that even an inverted box
+/// (lower > upper, never made by the engine) lies inside its fat box.
+Aabb fatten(const Aabb& box)
+{
+    if (hasNaN(box))
+        return box;
+    const Vec2 lower = box.lower.cwiseMin(box.upper);
+    const Vec2 upper = box.lower.cwiseMax(box.upper);
+    const Vec2 extent = upper - lower;
+    Scalar margin = constants::kBroadPhaseFatFraction * std::min(extent.x(), extent.y());
+    if (!std::isfinite(margin))
+        margin = 0;
+    return Aabb{lower - Vec2::Constant(margin), upper + Vec2::Constant(margin)};
+}
+
 } // namespace
 
+bool BroadPhase::fatBoxesHold(std::span<const BroadPhaseProxy> proxies) const
+{
+    if (proxies.size() != m_fat.size())
+        return false;
+    for (std::size_t i = 0; i < proxies.size(); ++i) {
+        const BroadPhaseProxy& proxy = proxies[i];
+        const BroadPhaseProxy& fat = m_fat[i];
+        // Written so that every comparison with a NaN fails: a NaN box is never inside.
+        const bool inside = fat.box.lower.x() <= proxy.box.lower.x() && fat.box.lower.y() <= proxy.box.lower.y() &&
+                            proxy.box.upper.x() <= fat.box.upper.x() && proxy.box.upper.y() <= fat.box.upper.y();
+        if (!inside || proxy.body != fat.body || proxy.fixed != fat.fixed)
+            return false;
+    }
+    return true;
+}
+
 void BroadPhase::findPairs(std::span<const BroadPhaseProxy> proxies, std::vector<ProxyPair>& pairs)
+{
+    m_reused = fatBoxesHold(proxies);
+    if (!m_reused) {
+        m_fat.resize(proxies.size());
+        for (std::size_t i = 0; i < proxies.size(); ++i)
+            m_fat[i] = BroadPhaseProxy{fatten(proxies[i].box), proxies[i].body, proxies[i].fixed};
+        sweep(m_fat, m_fatPairs);
+    }
+    // Every box is inside its fat box here (or has a NaN, and then it overlaps nothing), so the
+    // fat pairs hold every overlapping pair, and the same-body and two-fixed rules already hold
+    // for them. Filtering keeps their sorted order. Every pair is written and the count moves on
+    // only for those that overlap: in a settling pile about half do, at random, and a branch on
+    // each would be mispredicted that often.
+    pairs.resize(m_fatPairs.size());
+    std::size_t kept = 0;
+    for (const ProxyPair& pair : m_fatPairs) {
+        pairs[kept] = pair;
+        kept += proxies[pair.first].box.overlaps(proxies[pair.second].box) ? 1 : 0;
+    }
+    pairs.resize(kept);
+}
+
+void BroadPhase::sweep(std::span<const BroadPhaseProxy> proxies, std::vector<ProxyPair>& pairs)
 {
     pairs.clear();
     const std::size_t n = proxies.size();
