@@ -19,7 +19,7 @@ struct LaneVelocities {
 // Loading and storing go lane by lane: the bodies lie anywhere in memory. No two lanes of a batch
 // share a movable body, so the stores never overwrite one another. (Loading whole 256-bit rows and
 // transposing them was tried and was slower.)
-[[gnu::always_inline]] inline LaneVelocities load(const std::array<SolverBody*, kBatchLanes>& bodies)
+[[gnu::always_inline]] inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bodies)
 {
     LaneVelocities v;
     for (int lane = 0; lane < kBatchLanes; ++lane) {
@@ -33,12 +33,9 @@ struct LaneVelocities {
     return v;
 }
 
-/// Writes the lanes' velocities back to those bodies that can move (see ContactBatch::bodyA).
 [[gnu::always_inline]] inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const LaneVelocities& v)
 {
     for (int lane = 0; lane < kBatchLanes; ++lane) {
-        if (!(v.invMass[lane] > 0 || v.invInertia[lane] > 0))
-            continue;
         SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
         body.velocity = Vec2(v.x[lane], v.y[lane]);
         body.angularVelocity = v.angular[lane];
@@ -95,13 +92,10 @@ struct LanePoses {
     return p;
 }
 
-/// Writes the lanes' poses back to those bodies that can move, as store() does.
 [[gnu::always_inline]] inline void storePoses(const std::array<std::uint32_t, kBatchLanes>& indices, const LanePoses& p,
-                                              const Lanes& invMass, const Lanes& invInertia, std::span<BatchPose> poses)
+                       std::span<BatchPose> poses)
 {
     for (int lane = 0; lane < kBatchLanes; ++lane) {
-        if (!(invMass[lane] > 0 || invInertia[lane] > 0))
-            continue;
         BatchPose& pose = poses[indices[static_cast<std::size_t>(lane)]];
         pose.x = p.x[lane];
         pose.y = p.y[lane];
@@ -159,8 +153,8 @@ __attribute__((target_clones("avx2", "default"))) void warmStartBatches(std::spa
             apply(a, b, p.tangentImpulse, tx, ty, p.tangentArmA, p.tangentArmB);
             c.acted |= (p.normalImpulse != zero) | (p.tangentImpulse != zero);
         }
-        store(c.bodyA, a);
-        store(c.bodyB, b);
+        store(c.writeA, a);
+        store(c.writeB, b);
     }
 }
 
@@ -233,8 +227,8 @@ __attribute__((target_clones("avx2", "default"))) void solveBatches(std::span<Co
         apply(a, b, delta2, c.normalX, c.normalY, p2.normalArmA, p2.normalArmB);
         c.acted |= (delta1 != zero) | (delta2 != zero);
 
-        store(c.bodyA, a);
-        store(c.bodyB, b);
+        store(c.writeA, a);
+        store(c.writeB, b);
     }
 }
 
@@ -286,8 +280,8 @@ __attribute__((target_clones("avx2", "default"))) Scalar solvePositionBatches(st
             turn(a, -(c.invInertiaA * (impulse * armA)));
             turn(b, c.invInertiaB * (impulse * armB));
         }
-        storePoses(c.readA, a, c.invMassA, c.invInertiaA, poses);
-        storePoses(c.readB, b, c.invMassB, c.invInertiaB, poses);
+        storePoses(c.writeA, a, poses);
+        storePoses(c.writeB, b, poses);
     }
     Scalar result = 0;
     for (int lane = 0; lane < kBatchLanes; ++lane)

@@ -55,11 +55,14 @@ struct ContactBatch {
     LaneMask blockSolve{}; ///< both points may be solved together (K well conditioned)
     LaneMask acted{}; ///< an impulse acted on this lane's bodies this step
     std::array<BatchPoint, 2> points{};
-    /// The bodies of each lane. A lane writes the new velocities back only to a body that can
-    /// move: a fixed body's velocity never changes, and batches on two threads must never write
-    /// to one shared ground.
-    std::array<SolverBody*, kBatchLanes> bodyA{};
-    std::array<SolverBody*, kBatchLanes> bodyB{};
+    /// The bodies each lane reads its velocities from.
+    std::array<const SolverBody*, kBatchLanes> bodyA{};
+    std::array<const SolverBody*, kBatchLanes> bodyB{};
+    /// Where each lane writes them back: the body itself, or for a fixed body (whose velocity an
+    /// impulse never changes) a scratch body, so that batches on two threads never write to one
+    /// shared ground.
+    std::array<SolverBody*, kBatchLanes> writeA{};
+    std::array<SolverBody*, kBatchLanes> writeB{};
 };
 
 /// A body's pose as the batched position passes see it, with the cosine and sine of its angle kept
@@ -90,10 +93,11 @@ struct PositionBatch {
     };
     std::array<Anchors, 2> anchors{};
     LaneMask secondPoint{}; ///< the lane's contact has a second point
-    /// Each lane's bodies, as indices into the poses. Only the poses of bodies that can move are
-    /// written back, as in ContactBatch.
+    /// Each lane's bodies, as indices into the poses; a fixed body writes to a scratch pose.
     std::array<std::uint32_t, kBatchLanes> readA{};
     std::array<std::uint32_t, kBatchLanes> readB{};
+    std::array<std::uint32_t, kBatchLanes> writeA{};
+    std::array<std::uint32_t, kBatchLanes> writeB{};
 };
 
 /// The instructions the batch passes run with on this processor: "AVX2", or "SSE2" (the same bits).

@@ -812,9 +812,8 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
     // may have moved them; the passes keep both up to date, and hand the poses back after each
     // pass. Each half of a split world does its own bodies.
     const std::size_t count = bodies.size();
-    if (turnedElsewhere || m_poses.size() != count + 1) {
-        m_poses.resize(count + 1);
-        m_poses[count] = BatchPose{};
+    if (turnedElsewhere || m_poses.size() != count + kScratchPoseStride * m_scratchBodies.size()) {
+        m_poses.resize(count + kScratchPoseStride * m_scratchBodies.size());
         overBodyHalves(m_split, count, [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const SolverBody& body = bodies[i];
@@ -949,7 +948,9 @@ void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_
 {
     // Every field of every lane is written, padding included: clearing the batches first would
     // cost as much again.
-    const auto paddingPose = static_cast<std::uint32_t>(bodies.size());
+    SolverBody& scratch = m_scratchBodies[g];
+    scratch = SolverBody{};
+    const auto scratchPose = static_cast<std::uint32_t>(bodies.size() + kScratchPoseStride * g);
     for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
         ContactBatch& batch = m_batches[bi];
         PositionBatch& positions = m_positionBatches[bi];
@@ -961,10 +962,19 @@ void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_
             // it never acts.
             const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
             const bool two = c && c->pointCount == 2;
-            batch.bodyA[ul] = c ? &bodies[c->bodyA] : &m_paddingBody;
-            batch.bodyB[ul] = c ? &bodies[c->bodyB] : &m_paddingBody;
-            positions.readA[ul] = c ? c->bodyA : paddingPose;
-            positions.readB[ul] = c ? c->bodyB : paddingPose;
+            const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
+                                  std::array<SolverBody*, kBatchLanes>& write,
+                                  std::array<std::uint32_t, kBatchLanes>& readPose,
+                                  std::array<std::uint32_t, kBatchLanes>& writePose) {
+                const std::uint32_t index = c ? c->*body : 0;
+                const bool moves = c && movable(bodies[index]);
+                read[ul] = c ? &bodies[index] : &scratch;
+                write[ul] = moves ? &bodies[index] : &scratch;
+                readPose[ul] = c ? index : scratchPose;
+                writePose[ul] = moves ? index : scratchPose;
+            };
+            side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
+            side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
             const SolverBody& a = *batch.bodyA[ul];
             const SolverBody& b = *batch.bodyB[ul];
             const Vec2 n = c ? c->normal : Vec2::Zero();

@@ -268,13 +268,17 @@ private:
     std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint
     std::array<std::size_t, 4> m_batchGroupStart{}; ///< where each group's batches start
     std::vector<PositionBatch> m_positionBatches; ///< the same lanes as m_batches, for the position passes
-    /// Per body, then the padding lanes' pose (never written): the poses of a batched step's
-    /// position passes.
+    /// Per body, then one scratch pose per group, kScratchPoseStride apart: the poses of a batched
+    /// step's position passes.
     std::vector<BatchPose> m_poses;
+    /// Poses apart between two groups' scratch poses: 3 × 40 bytes leave a whole cache line between
+    /// them, so the two threads, which write theirs for every fixed body and padding lane, never
+    /// write to one line.
+    static constexpr std::size_t kScratchPoseStride = 3;
     std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
     std::vector<std::uint8_t> m_colourOf; ///< per constraint of the group being coloured
-    /// What a padding lane reads as its bodies: one that cannot move, and so is never written.
-    SolverBody m_paddingBody;
+    /// Where a lane writes a fixed body's velocity, one per group, each on its own cache line.
+    std::array<SolverBody, 3> m_scratchBodies{};
 };
 
 } // namespace impetus::controller
