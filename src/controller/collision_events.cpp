@@ -77,10 +77,8 @@ void updateCollisionState(model::World& world, const ContactSolver& contacts, st
             // the first touching one opens the event and the others add their impulse to it.
             const ContactConstraint& c = constraints[k];
             Scalar impulse = 0;
-            for (int i = 0; i < c.pointCount; ++i) {
-                const ContactConstraintPoint& q = c.points[static_cast<std::size_t>(i)];
-                impulse += q.normalImpulse + q.impactImpulse;
-            }
+            for (std::size_t i = 0; i < r.pointCount; ++i)
+                impulse += r.normalImpulses[i] + c.points[i].impactImpulse;
             CollisionEvent* open = nullptr;
             for (std::size_t e = out.size(); e > 0; --e) {
                 CollisionEvent& event = out[e - 1];

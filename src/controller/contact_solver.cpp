@@ -297,9 +297,12 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
     return deepest;
 }
 
-/// The record of a constraint whose impulses are final: its pieces, its points' feature ids and
-/// impulses, and whether it touches (isTouching).
-void writeRecord(const ContactConstraint& c, model::ContactRecord& r)
+/// The part of a constraint's record that is known when it is built: its pieces, its points'
+/// feature ids, and whether a point is within the touch distance. A contact touches when a point
+/// is within the touch distance, or when any impulse acted on it this step (a speculative contact
+/// that stopped a fast body a hair before the surface touched): solveImpacts and
+/// finishVelocities add the impulses.
+void startRecord(const ContactConstraint& c, model::ContactRecord& r)
 {
     r.bodyA = model::BodyId{c.ownerA};
     r.pieceA = c.pieceA;
@@ -309,25 +312,23 @@ void writeRecord(const ContactConstraint& c, model::ContactRecord& r)
     r.featureIds = {};
     r.normalImpulses = {};
     r.tangentImpulses = {};
+    r.touching = false;
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
         r.featureIds[i] = c.points[i].id;
-        r.normalImpulses[i] = c.points[i].normalImpulse;
-        r.tangentImpulses[i] = c.points[i].tangentImpulse;
+        r.touching = r.touching || c.points[i].separation <= constants::kTouchDistance;
     }
-    r.touching = isTouching(c);
+}
+
+/// Ends point i of a record with the impulses of the velocity passes; a point that carries a
+/// normal impulse touches.
+void finishRecord(model::ContactRecord& r, std::size_t i, Scalar normalImpulse, Scalar tangentImpulse)
+{
+    r.normalImpulses[i] = normalImpulse;
+    r.tangentImpulses[i] = tangentImpulse;
+    r.touching = r.touching || normalImpulse > 0;
 }
 
 } // namespace
-
-bool isTouching(const ContactConstraint& c)
-{
-    for (int i = 0; i < c.pointCount; ++i) {
-        const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-        if (p.separation <= constants::kTouchDistance || p.normalImpulse > 0 || p.impactImpulse > 0)
-            return true;
-    }
-    return false;
-}
 
 Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 
@@ -349,6 +350,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     const std::size_t firstCount = nonEmpty(0, half);
     m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
     m_constraintBodies.resize(m_constraints.size());
+    m_records.resize(m_constraints.size());
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
     computeRotations(bodies, split);
     const std::vector<model::ContactRecord>& previous = world.contacts;
@@ -461,9 +463,10 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             c.blockSolve = twoPoint(0, 0) * twoPoint(0, 0) < kMaxBlockConditionNumber * twoPoint.determinant();
         }
 
-        // What solveImpacts() starts from, found while the constraint is at hand.
+        // What solveImpacts() starts from, and the record, found while the constraint is at hand.
         const auto index = static_cast<std::uint32_t>(&c - m_constraints.data());
         m_constraintBodies[index] = {c.bodyA, c.bodyB};
+        startRecord(c, m_records[index]);
         points += static_cast<std::size_t>(c.pointCount);
         if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
             m_preparedCandidates[part].push_back({*fastest, index, 0});
@@ -600,6 +603,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             }
             p.impacted = true;
             p.impactImpulse += x(i);
+            if (p.impactImpulse > 0)
+                m_records[best].touching = true;
         }
 
         // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
@@ -742,42 +747,39 @@ void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 
 void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 {
-    m_records.resize(m_constraints.size());
+    // The impulses go to the records alone, which is what the next step warm-starts from: the
+    // constraints, seven cache lines each, are not read or written again.
     if (!m_batched) {
         std::size_t slot = 0;
         for (const std::vector<std::uint32_t>& group : m_groups) {
             for (const std::uint32_t ci : group) {
-                ContactConstraint& c = m_constraints[ci];
                 const VelocityConstraint& v = m_velocityConstraints[slot++];
-                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-                    c.points[i].normalImpulse = v.points[i].normalImpulse;
-                    c.points[i].tangentImpulse = v.points[i].tangentImpulse;
-                }
+                model::ContactRecord& r = m_records[ci];
+                for (std::size_t i = 0; i < static_cast<std::size_t>(v.pointCount); ++i)
+                    finishRecord(r, i, v.points[i].normalImpulse, v.points[i].tangentImpulse);
                 if (v.acted)
-                    markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
-                writeRecord(c, m_records[ci]);
+                    markContactForce(bodies[v.bodyA], bodies[v.bodyB]);
             }
         }
         return;
     }
-    // Each group writes its own constraints and marks its own movable bodies, so the halves of a
-    // split world can do this side by side too.
+    // Each group writes its own records and marks its own movable bodies (the write pointers of a
+    // fixed body lead to an unmovable scratch body, which markContactForce leaves alone), so the
+    // halves of a split world can do this side by side too.
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
         for (std::size_t bi = m_batchGroupStart[ug]; bi < m_batchGroupStart[ug + 1]; ++bi) {
             const ContactBatch& batch = m_batches[bi];
             for (int lane = 0; lane < kBatchLanes; ++lane) {
-                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + static_cast<std::size_t>(lane)];
+                const auto ul = static_cast<std::size_t>(lane);
+                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
                 if (ci == kNoConstraint)
                     continue;
-                ContactConstraint& c = m_constraints[ci];
-                for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
-                    c.points[i].normalImpulse = batch.points[i].normalImpulse[lane];
-                    c.points[i].tangentImpulse = batch.points[i].tangentImpulse[lane];
-                }
+                model::ContactRecord& r = m_records[ci];
+                for (std::size_t i = 0; i < r.pointCount; ++i)
+                    finishRecord(r, i, batch.points[i].normalImpulse[lane], batch.points[i].tangentImpulse[lane]);
                 if (batch.acted[lane] != 0)
-                    markContactForce(bodies[c.bodyA], bodies[c.bodyB]);
-                writeRecord(c, m_records[ci]);
+                    markContactForce(*batch.writeA[ul], *batch.writeB[ul]);
             }
         }
     });

@@ -74,10 +74,6 @@ struct ContactConstraint {
     bool blockSolve = false;
 };
 
-/// A contact touches when a point is within the touch distance, or when any impulse acted on it
-/// this step (a speculative contact that stopped a fast body a hair before the surface touched).
-bool isTouching(const ContactConstraint& c);
-
 /// Mixing rule for two materials in contact: e = max(eA, eB), the bouncier surface wins, as when
 /// a rubber ball bounces on a hard floor; μ = √(μA·μB), which gives exactly μ when both are μ.
 Scalar mixRestitution(Scalar a, Scalar b);
@@ -159,12 +155,13 @@ public:
 
     /// One sequential-impulse pass over every contact: friction, then the normal constraints.
     void solveVelocities(std::span<SolverBody> bodies);
-    /// Ends the velocity passes: keeps their impulses in constraints(), writes this step's contact
-    /// records (what the next step warm-starts from) and marks the bodies that a contact force
+    /// Ends the velocity passes: writes their impulses into this step's contact records (what the
+    /// next step warm-starts from; see swapRecords) and marks the bodies that a contact force
     /// acted on.
     void finishVelocities(std::span<SolverBody> bodies);
 
-    /// Exchanges the contact records finishVelocities() wrote, one per constraint in the same
+    /// Exchanges this step's contact records (begun by prepare(), with the impacts from
+    /// solveImpacts() and the impulses from finishVelocities()), one per constraint in the same
     /// order, for `records`, whose old contents this solver then overwrites at the next step.
     void swapRecords(std::vector<model::ContactRecord>& records) { m_records.swap(records); }
 
@@ -173,7 +170,8 @@ public:
     /// true when every penetration is within the slop.
     bool solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere);
 
-    /// The constraints of this step, with their impulses.
+    /// The constraints of this step, with their impact impulses. Their normal and tangent impulses
+    /// are the warm start's: the passes' final ones are in the records (swapRecords).
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
 
 
@@ -234,8 +232,8 @@ private:
                             const Vec2& impulse, std::span<SolverBody> bodies);
 
     std::vector<ContactConstraint> m_constraints;
-    /// This step's contact records, written with the impulses in finishVelocities(), while each
-    /// constraint is at hand (see swapRecords).
+    /// This step's contact records (see swapRecords), begun while each constraint is built and
+    /// finished from the batches, so the constraints need not be read again.
     std::vector<model::ContactRecord> m_records;
     /// Each constraint's two solver bodies, packed: partition() and colour() read only these, and
     /// a walk over the whole constraints would touch a cache line per constraint.

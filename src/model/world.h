@@ -43,18 +43,20 @@ struct WorldSettings {
 /// Two convex pieces that were in contact, or close enough for a speculative contact, at the end
 /// of the last step. Remembered so that the next step can warm-start its solver with these
 /// impulses and tell a contact that begins from one that goes on.
-struct ContactRecord {
+/// One cache line each: a large world writes and reads thousands of them every step.
+struct alignas(64) ContactRecord {
     BodyId bodyA; ///< bodyA.index < bodyB.index
     std::uint32_t pieceA = 0; ///< convex piece of body A (0 for round shapes)
     BodyId bodyB;
     std::uint32_t pieceB = 0;
     std::uint8_t pointCount = 0; ///< 1 or 2
+    bool touching = false; ///< really touching (not only speculative)
     std::array<std::uint32_t, 2> featureIds{}; ///< which features touched, per point
     std::array<Scalar, 2> normalImpulses{}; ///< accumulated normal impulse per point, N·s
     std::array<Scalar, 2> tangentImpulses{}; ///< accumulated friction impulse per point, N·s
-    bool touching = false; ///< really touching (not only speculative)
     bool operator==(const ContactRecord&) const = default;
 };
+static_assert(sizeof(ContactRecord) == 64);
 
 /// A whole scene and its simulated time.
 struct World {
