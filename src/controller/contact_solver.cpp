@@ -335,11 +335,11 @@ Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
 
 void ContactSolver::prepare(const model::World& world, std::span<const PairManifold> manifolds,
-                            std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
+                            std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
 {
     // A large world's manifolds are split between two threads. Empty ones (bounding boxes that
-    // overlap without contact) make no constraint: counted first, so that each half writes its
-    // constraints straight to their final slots, in order.
+    // overlap without contact) make no constraint: counted first, so that each half numbers its
+    // constraints straight into their final slots, in order.
     const bool split = m_tasks && manifolds.size() >= constants::kParallelMinConstraints;
     const std::size_t half = split ? manifolds.size() / 2 : manifolds.size();
     const auto nonEmpty = [&](std::size_t begin, std::size_t end) {
@@ -348,34 +348,62 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
                                                       [](const PairManifold& pm) { return pm.manifold.count > 0; }));
     };
     const std::size_t firstCount = nonEmpty(0, half);
-    m_constraints.resize(firstCount + nonEmpty(half, manifolds.size()));
-    m_constraintBodies.resize(m_constraints.size());
-    m_records.resize(m_constraints.size());
+    const std::size_t count = firstCount + nonEmpty(half, manifolds.size());
+    m_constraints.resize(count);
+    m_constraintBodies.resize(count);
+    m_records.resize(count);
+    m_manifoldOf.resize(count);
+    m_previousOf.resize(count);
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
     computeRotations(bodies, split);
     const std::vector<model::ContactRecord>& previous = world.contacts;
-    const auto build = [&](std::size_t begin, std::size_t end, std::size_t out, int part) {
-        const auto up = static_cast<std::size_t>(part);
-        m_preparedCandidates[up].clear();
-        m_preparedPoints[up] = 0;
-        if (begin < end)
-            buildConstraints(world, manifolds, bodies, derivatives, previous, begin, end, out, h, up);
-    };
     if (split) {
         m_tasks->run([&](int part) {
-            part == 0 ? build(0, half, 0, 0) : build(half, manifolds.size(), firstCount, 1);
+            part == 0 ? numberConstraints(manifolds, previous, 0, half, 0)
+                      : numberConstraints(manifolds, previous, half, manifolds.size(), firstCount);
         });
     } else {
-        build(0, manifolds.size(), 0, 0);
-        build(0, 0, 0, 1);
+        numberConstraints(manifolds, previous, 0, manifolds.size(), 0);
+    }
+
+    // The solving order comes next, as it needs only the constraints' bodies. Then a batched
+    // world builds each group's constraints on that group's thread and writes each into its batch
+    // lane while it is at hand; another world builds them in two halves of their list.
+    partition(bodies);
+    for (std::size_t part = 0; part < m_preparedCandidates.size(); ++part) {
+        m_preparedCandidates[part].clear();
+        m_preparedPoints[part] = 0;
+    }
+    if (m_batched) {
+        m_batches.resize(m_batchLanes.size() / kBatchLanes);
+        m_positionBatches.resize(m_batches.size());
+        runGroups([&](int g) {
+            const auto ug = static_cast<std::size_t>(g);
+            m_scratchBodies[ug] = SolverBody{};
+            buildConstraints(world, manifolds, bodies, derivatives, m_groups[ug], h, ug);
+            for (std::size_t lane = m_batchGroupStart[ug] * kBatchLanes; lane < m_batchGroupStart[ug + 1] * kBatchLanes;
+                 ++lane) {
+                if (m_batchLanes[lane] == kNoConstraint)
+                    packLane(bodies, h, ug, lane);
+            }
+        });
+    } else if (split) {
+        const std::span<const std::uint32_t> all(m_groups[0]);
+        m_tasks->run([&](int part) {
+            part == 0 ? buildConstraints(world, manifolds, bodies, derivatives, all.first(count / 2), h, 0)
+                      : buildConstraints(world, manifolds, bodies, derivatives, all.subspan(count / 2), h, 1);
+        });
+    } else {
+        buildConstraints(world, manifolds, bodies, derivatives, m_groups[0], h, 0);
     }
 }
 
-void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
-                                     std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
-                                     const std::vector<model::ContactRecord>& previous, std::size_t begin,
-                                     std::size_t end, std::size_t out, Scalar h, std::size_t part)
+void ContactSolver::numberConstraints(std::span<const PairManifold> manifolds,
+                                      const std::vector<model::ContactRecord>& previous, std::size_t begin,
+                                      std::size_t end, std::size_t out)
 {
+    if (begin >= end)
+        return;
     // Both lists are sorted by (bodyA, pieceA, bodyB, pieceB): walk them together, from where this
     // range starts.
     const PairManifold& first = manifolds[begin];
@@ -384,15 +412,33 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         std::lower_bound(previous.begin(), previous.end(), firstKey,
                          [](const model::ContactRecord& r, const PairKey& key) { return keyOf(r) < key; }) -
         previous.begin());
-    // Counted in a local and stored once at the end: m_preparedPoints[0] and [1] share a cache line,
-    // and the two threads adding to them on every constraint made this loop slower on two threads
-    // than on one (0.88 against 0.80 ms on the benchmark pyramid; 0.45 ms without).
-    std::size_t points = 0;
     for (std::size_t k = begin; k < end; ++k) {
         const PairManifold& pm = manifolds[k];
         if (pm.manifold.count == 0)
             continue;
-        ContactConstraint& c = m_constraints[out++];
+        const PairKey want{pm.ownerA, pm.pieceA, pm.ownerB, pm.pieceB};
+        while (cursor < previous.size() && keyOf(previous[cursor]) < want)
+            ++cursor;
+        m_manifoldOf[out] = static_cast<std::uint32_t>(k);
+        m_previousOf[out] =
+            cursor < previous.size() && keyOf(previous[cursor]) == want ? static_cast<std::uint32_t>(cursor) : kNoRecord;
+        m_constraintBodies[out] = {pm.bodyA, pm.bodyB};
+        ++out;
+    }
+}
+
+void ContactSolver::buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
+                                     std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                                     std::span<const std::uint32_t> indices, Scalar h, std::size_t part)
+{
+    const std::vector<model::ContactRecord>& previous = world.contacts;
+    // Counted in a local and stored once at the end: the m_preparedPoints share a cache line, and
+    // the two threads adding to them on every constraint made this loop slower on two threads
+    // than on one (0.88 against 0.80 ms on the benchmark pyramid; 0.45 ms without).
+    std::size_t points = 0;
+    for (const std::uint32_t index : indices) {
+        const PairManifold& pm = manifolds[m_manifoldOf[index]];
+        ContactConstraint& c = m_constraints[index];
         c = ContactConstraint{};
         c.bodyA = pm.bodyA;
         c.pieceA = pm.pieceA;
@@ -410,11 +456,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         const SolverBody& b = bodies[c.bodyB];
         c.localNormalA = intoFrame(c.normal, m_rotations[c.bodyA]);
 
-        const PairKey want{c.ownerA, c.pieceA, c.ownerB, c.pieceB};
-        while (cursor < previous.size() && keyOf(previous[cursor]) < want)
-            ++cursor;
-        const model::ContactRecord* match =
-            cursor < previous.size() && keyOf(previous[cursor]) == want ? &previous[cursor] : nullptr;
+        const model::ContactRecord* match = m_previousOf[index] == kNoRecord ? nullptr : &previous[m_previousOf[index]];
 
         const Vec2 t = tangentOf(c.normal);
         const BodyDerivative& da = derivatives[c.bodyA];
@@ -463,13 +505,14 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             c.blockSolve = twoPoint(0, 0) * twoPoint(0, 0) < kMaxBlockConditionNumber * twoPoint.determinant();
         }
 
-        // What solveImpacts() starts from, and the record, found while the constraint is at hand.
-        const auto index = static_cast<std::uint32_t>(&c - m_constraints.data());
-        m_constraintBodies[index] = {c.bodyA, c.bodyB};
+        // What solveImpacts() starts from, the record and the batch lane, while the constraint is
+        // at hand.
         startRecord(c, m_records[index]);
         points += static_cast<std::size_t>(c.pointCount);
         if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
             m_preparedCandidates[part].push_back({*fastest, index, 0});
+        if (m_batched)
+            packLane(bodies, h, part, m_laneOf[index]);
     }
     m_preparedPoints[part] = points;
 }
@@ -478,7 +521,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
-    const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1];
+    const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1] + m_preparedPoints[2];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
     // The fastest approach first: a collision happens before the ones it causes. A heap holds the
@@ -673,12 +716,8 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
     // The velocity passes see only what they need, packed in solving order: a third of the
     // constraint's size, read front to back, eight times a step.
     if (m_batched) {
-        m_batches.resize(m_batchLanes.size() / kBatchLanes);
-        m_positionBatches.resize(m_batches.size());
-        runGroups([&](int g) {
-            packGroup(bodies, h, static_cast<std::size_t>(g));
-            warmStartBatches(batchesOf(static_cast<std::size_t>(g)));
-        });
+        // prepare() has filled the batches.
+        runGroups([&](int g) { warmStartBatches(batchesOf(static_cast<std::size_t>(g))); });
         return;
     }
     m_velocityConstraints.resize(m_constraints.size());
@@ -897,6 +936,7 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
     // taken is solved on its own after the batches.
     constexpr int kColours = 64;
     m_batchLanes.clear();
+    m_laneOf.resize(m_constraints.size());
     m_colourMasks.resize(bodies.size());
     std::size_t batchCount = 0;
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
@@ -934,88 +974,82 @@ void ContactSolver::colour(std::span<const SolverBody> bodies)
         // A constraint that found every colour taken gets a batch of its own, after the others.
         m_batchLanes.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
         for (std::size_t k = 0; k < group.size(); ++k) {
-            if (m_colourOf[k] < kColours) {
-                m_batchLanes[firstLane[m_colourOf[k]]++] = group[k];
-            } else {
-                m_batchLanes[lanes] = group[k];
+            const std::size_t lane = m_colourOf[k] < kColours ? firstLane[m_colourOf[k]]++ : lanes;
+            if (m_colourOf[k] == kColours)
                 lanes += kBatchLanes;
-            }
+            m_batchLanes[lane] = group[k];
+            m_laneOf[group[k]] = static_cast<std::uint32_t>(lane);
         }
         batchCount = lanes / kBatchLanes;
     }
     m_batchGroupStart[m_groups.size()] = batchCount;
 }
 
-void ContactSolver::packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g)
+void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex)
 {
-    // Every field of every lane is written, padding included: clearing the batches first would
-    // cost as much again.
+    // Every field of the lane is written, padding included: nothing is cleared first.
     SolverBody& scratch = m_scratchBodies[g];
-    scratch = SolverBody{};
     const auto scratchPose = static_cast<std::uint32_t>(bodies.size() + kScratchPoseStride * g);
-    for (std::size_t bi = m_batchGroupStart[g]; bi < m_batchGroupStart[g + 1]; ++bi) {
-        ContactBatch& batch = m_batches[bi];
-        PositionBatch& positions = m_positionBatches[bi];
-        batch.acted = LaneMask{};
-        for (int lane = 0; lane < kBatchLanes; ++lane) {
-            const auto ul = static_cast<std::size_t>(lane);
-            const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
-            // Padding is a contact without mass or normal between two bodies that cannot move;
-            // it never acts.
-            const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
-            const bool two = c && c->pointCount == 2;
-            const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
-                                  std::array<SolverBody*, kBatchLanes>& write,
-                                  std::array<std::uint32_t, kBatchLanes>& readPose,
-                                  std::array<std::uint32_t, kBatchLanes>& writePose) {
-                const std::uint32_t index = c ? c->*body : 0;
-                const bool moves = c && movable(bodies[index]);
-                read[ul] = c ? &bodies[index] : &scratch;
-                write[ul] = moves ? &bodies[index] : &scratch;
-                readPose[ul] = c ? index : scratchPose;
-                writePose[ul] = moves ? index : scratchPose;
-            };
-            side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
-            side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
-            const SolverBody& a = *batch.bodyA[ul];
-            const SolverBody& b = *batch.bodyB[ul];
-            const Vec2 n = c ? c->normal : Vec2::Zero();
-            const Vec2 t = tangentOf(n);
-            batch.normalX[lane] = n.x();
-            batch.normalY[lane] = n.y();
-            batch.friction[lane] = c ? c->friction : 0;
-            positions.invMassA[lane] = a.invMass;
-            positions.invInertiaA[lane] = a.invInertia;
-            positions.invMassB[lane] = b.invMass;
-            positions.invInertiaB[lane] = b.invInertia;
-            // A one-point contact's second point has no arms or mass and can never close its gap:
-            // only the "first point alone" and "none" cases can hold, which is the one-point solve.
-            batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
-            const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
-            positions.localNormalX[lane] = localNormal.x();
-            positions.localNormalY[lane] = localNormal.y();
-            positions.secondPoint[lane] = two ? -1 : 0;
-            for (std::size_t i = 0; i < 2; ++i) {
-                const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
-                const ContactConstraintPoint none;
-                const ContactConstraintPoint& q = p ? *p : none;
-                BatchPoint& v = batch.points[i];
-                v.normalArmA[lane] = cross(q.rA, n);
-                v.normalArmB[lane] = cross(q.rB, n);
-                v.tangentArmA[lane] = cross(q.rA, t);
-                v.tangentArmB[lane] = cross(q.rB, t);
-                v.normalMass[lane] = q.normalMass;
-                v.tangentMass[lane] = q.tangentMass;
-                v.normalImpulse[lane] = q.normalImpulse;
-                v.tangentImpulse[lane] = q.tangentImpulse;
-                v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
-                PositionBatch::Anchors& anchors = positions.anchors[i];
-                anchors.ax[lane] = q.localAnchorA.x();
-                anchors.ay[lane] = q.localAnchorA.y();
-                anchors.bx[lane] = q.localAnchorB.x();
-                anchors.by[lane] = q.localAnchorB.y();
-            }
-        }
+    const std::size_t bi = laneIndex / kBatchLanes;
+    const auto lane = static_cast<int>(laneIndex % kBatchLanes);
+    const auto ul = static_cast<std::size_t>(lane);
+    ContactBatch& batch = m_batches[bi];
+    PositionBatch& positions = m_positionBatches[bi];
+    const std::uint32_t ci = m_batchLanes[laneIndex];
+    // Padding is a contact without mass or normal between two bodies that cannot move; it never
+    // acts.
+    const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
+    const bool two = c && c->pointCount == 2;
+    const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
+                          std::array<SolverBody*, kBatchLanes>& write, std::array<std::uint32_t, kBatchLanes>& readPose,
+                          std::array<std::uint32_t, kBatchLanes>& writePose) {
+        const std::uint32_t index = c ? c->*body : 0;
+        const bool moves = c && movable(bodies[index]);
+        read[ul] = c ? &bodies[index] : &scratch;
+        write[ul] = moves ? &bodies[index] : &scratch;
+        readPose[ul] = c ? index : scratchPose;
+        writePose[ul] = moves ? index : scratchPose;
+    };
+    side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
+    side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
+    const SolverBody& a = *batch.bodyA[ul];
+    const SolverBody& b = *batch.bodyB[ul];
+    const Vec2 n = c ? c->normal : Vec2::Zero();
+    const Vec2 t = tangentOf(n);
+    batch.normalX[lane] = n.x();
+    batch.normalY[lane] = n.y();
+    batch.friction[lane] = c ? c->friction : 0;
+    batch.acted[lane] = 0;
+    positions.invMassA[lane] = a.invMass;
+    positions.invInertiaA[lane] = a.invInertia;
+    positions.invMassB[lane] = b.invMass;
+    positions.invInertiaB[lane] = b.invInertia;
+    // A one-point contact's second point has no arms or mass and can never close its gap: only
+    // the "first point alone" and "none" cases can hold, which is the one-point solve.
+    batch.blockSolve[lane] = two && c->blockSolve ? -1 : 0;
+    const Vec2 localNormal = c ? c->localNormalA : Vec2::Zero();
+    positions.localNormalX[lane] = localNormal.x();
+    positions.localNormalY[lane] = localNormal.y();
+    positions.secondPoint[lane] = two ? -1 : 0;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
+        const ContactConstraintPoint none;
+        const ContactConstraintPoint& q = p ? *p : none;
+        BatchPoint& v = batch.points[i];
+        v.normalArmA[lane] = cross(q.rA, n);
+        v.normalArmB[lane] = cross(q.rB, n);
+        v.tangentArmA[lane] = cross(q.rA, t);
+        v.tangentArmB[lane] = cross(q.rB, t);
+        v.normalMass[lane] = q.normalMass;
+        v.tangentMass[lane] = q.tangentMass;
+        v.normalImpulse[lane] = q.normalImpulse;
+        v.tangentImpulse[lane] = q.tangentImpulse;
+        v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
+        PositionBatch::Anchors& anchors = positions.anchors[i];
+        anchors.ax[lane] = q.localAnchorA.x();
+        anchors.ay[lane] = q.localAnchorA.y();
+        anchors.bx[lane] = q.localAnchorB.x();
+        anchors.by[lane] = q.localAnchorB.y();
     }
 }
 

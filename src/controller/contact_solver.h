@@ -121,12 +121,13 @@ public:
         std::uint32_t ownerB = 0;
     };
 
-    /// Creates the constraints of a step of length h (s). `bodies` holds every solver body at the
-    /// start of the step, and
-    /// `derivatives` their smooth-force derivatives, indexed alike (world bodies, then soft-grid
-    /// ellipses: force_model.h, stateCount).
-    void prepare(const model::World& world, std::span<const PairManifold> manifolds,
-                 std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h);
+    /// Creates the constraints of a step of length h (s), orders them for solving (see
+    /// partition) and, in a batched step, lays them out in batches, which keep pointers into
+    /// `bodies` for the velocity passes to write through. `bodies` holds every solver body at the
+    /// start of the step, and `derivatives` their smooth-force derivatives, indexed alike (world
+    /// bodies, then soft-grid ellipses: force_model.h, stateCount).
+    void prepare(const model::World& world, std::span<const PairManifold> manifolds, std::span<SolverBody> bodies,
+                 std::span<const BodyDerivative> derivatives, Scalar h);
 
     /// Resolves the impacts of this step, in order of approach speed, on `bodies` (which hold the
     /// velocities from before this step's forces). Records each body's impact data. Returns the
@@ -142,15 +143,8 @@ public:
     void setBatchMinConstraints(std::size_t count) { m_batchMinConstraints = count; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
-    /// Orders the constraints for solving. A large world (constants::kParallelMinConstraints) is
-    /// cut into two halves that share no movable body, solved side by side on two threads, then
-    /// the constraints that join them; a small one keeps the broad phase's order. In a batched
-    /// step each of these groups is then coloured for the velocity passes: colour by colour,
-    /// kBatchLanes contacts at a time. The order, and so the result, depends only on the world,
-    /// not on how many threads the machine has.
-    void partition(std::span<const SolverBody> bodies);
-    /// Starts the velocity passes: packs the constraints for them and applies last step's
-    /// contact-force impulses (warm starting).
+    /// Starts the velocity passes: packs the constraints for them (unless prepare() has put them
+    /// in batches) and applies last step's contact-force impulses (warm starting).
     void warmStart(std::span<SolverBody> bodies, Scalar h);
 
     /// One sequential-impulse pass over every contact: friction, then the normal constraints.
@@ -178,13 +172,23 @@ public:
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
     static constexpr std::uint8_t kFixedHalf = 255; ///< m_half of a body that cannot move
-    /// prepare() for manifolds [begin, end): the non-empty ones' constraints go to m_constraints
-    /// from slot `out` on; the approaching ones and the point count go to `part` (0 or 1) of
-    /// m_preparedCandidates and m_preparedPoints.
+    /// Numbers the non-empty manifolds of [begin, end) from constraint `out` on: fills
+    /// m_manifoldOf, m_previousOf (the matching record of the last step) and m_constraintBodies.
+    void numberConstraints(std::span<const PairManifold> manifolds, const std::vector<model::ContactRecord>& previous,
+                           std::size_t begin, std::size_t end, std::size_t out);
+    /// Orders the constraints for solving. A large world (constants::kParallelMinConstraints) is
+    /// cut into two halves that share no movable body, solved side by side on two threads, then
+    /// the constraints that join them; a small one keeps the broad phase's order. In a batched
+    /// step each of these groups is then coloured for the velocity passes: colour by colour,
+    /// kBatchLanes contacts at a time. The order, and so the result, depends only on the world,
+    /// not on how many threads the machine has. Reads only the constraints' bodies.
+    void partition(std::span<const SolverBody> bodies);
+    /// Builds the constraints `indices` (and in a batched step writes each into its lane); the
+    /// approaching ones and the point count go to `part` of m_preparedCandidates and
+    /// m_preparedPoints.
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
-                          std::span<const SolverBody> bodies, std::span<const BodyDerivative> derivatives,
-                          const std::vector<model::ContactRecord>& previous, std::size_t begin, std::size_t end,
-                          std::size_t out, Scalar h, std::size_t part);
+                          std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
+                          std::span<const std::uint32_t> indices, Scalar h, std::size_t part);
     /// Runs work(begin, end) over the body indices [0, count): in two halves side by side when
     /// `split` and there is a second thread, else all at once. Each index is written by one half.
     void overBodyHalves(bool split, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
@@ -197,8 +201,9 @@ private:
     void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
     /// Colours the constraints of each group and lays out the batches' lanes (partition()).
     void colour(std::span<const SolverBody> bodies);
-    /// Fills group g's batches from the constraints, for this step's velocity and position passes.
-    void packGroup(std::span<SolverBody> bodies, Scalar h, std::size_t g);
+    /// Fills lane `laneIndex` of the batches of group g from its constraint (or as padding), for
+    /// this step's velocity and position passes.
+    void packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex);
     /// solvePositions() for a batched step.
     bool solvePositionsInBatches(std::span<SolverBody> bodies, bool turnedElsewhere);
     /// The batches of group g.
@@ -242,9 +247,13 @@ private:
     std::vector<std::uint32_t> m_lastTimedImpulse; ///< per body: its latest timeline entry
     std::vector<Candidate> m_candidates; ///< the impact heap
     /// The constraints approaching at the start of the step, and the number of contact points, as
-    /// prepare() found them in each half of the manifolds.
-    std::array<std::vector<Candidate>, 2> m_preparedCandidates;
-    std::array<std::size_t, 2> m_preparedPoints{};
+    /// prepare() found them in each part it built (a group, or a half of the constraints).
+    std::array<std::vector<Candidate>, 3> m_preparedCandidates;
+    std::array<std::size_t, 3> m_preparedPoints{};
+    static constexpr std::uint32_t kNoRecord = UINT32_MAX;
+    std::vector<std::uint32_t> m_manifoldOf; ///< per constraint: its manifold
+    std::vector<std::uint32_t> m_previousOf; ///< per constraint: the last step's record, or kNoRecord
+    std::vector<std::uint32_t> m_laneOf; ///< per constraint of a batched step: its lane
     std::vector<std::uint32_t> m_versions; ///< per constraint: bumped when it is looked at again
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body

@@ -371,7 +371,6 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     // Phase 2: impacts, on the velocities from before this step's forces.
     const Clock::time_point solveStart = Clock::now();
     m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives, h);
-    m_contactSolver.partition(m_bodies);
     m_jointSolver.prepare(world, m_bodies);
     m_profile.prepareMs += millisecondsSince(solveStart);
     const Clock::time_point impactsStart = Clock::now();
