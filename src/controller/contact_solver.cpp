@@ -448,12 +448,10 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         c.ownerB = pm.ownerB;
         c.normal = pm.manifold.normal;
         c.pointCount = pm.manifold.count;
-        const model::Body& bodyA = world.bodies[c.ownerA];
-        const model::Body& bodyB = world.bodies[c.ownerB];
-        c.friction = mixFriction(bodyA.material.friction, bodyB.material.friction);
-        c.restitution = mixRestitution(bodyA.material.restitution, bodyB.material.restitution);
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
+        c.friction = mixFriction(a.friction, b.friction);
+        c.restitution = mixRestitution(a.restitution, b.restitution);
         c.localNormalA = intoFrame(c.normal, m_rotations[c.bodyA]);
 
         const model::ContactRecord* match = m_previousOf[index] == kNoRecord ? nullptr : &previous[m_previousOf[index]];

@@ -67,6 +67,8 @@ void Simulation::setUpSolverBodies(const model::World& world)
             // A fixed body's own velocity is what its surface brings to a contact (a belt, a drum).
             sb.velocity = body.state.velocity;
             sb.angularVelocity = body.state.angularVelocity;
+            sb.friction = body.material.friction;
+            sb.restitution = body.material.restitution;
         }
     });
     // A soft body's own solver body is its grid's aggregate: only joints act on it (contacts act
@@ -94,6 +96,8 @@ void Simulation::setUpSolverBodies(const model::World& world)
             e.velocity = grid.velocities[i];
             // Ellipses do not spin: they are points of the grid, whose rotation is the springs'.
             e.invMass = invMass;
+            e.friction = world.bodies[owner].material.friction;
+            e.restitution = world.bodies[owner].material.restitution;
         }
     }
 }

@@ -24,6 +24,10 @@ struct alignas(64) SolverBody {
     bool hadImpact = false; ///< an impact impulse acted on this body this step
     Scalar firstImpactTau = 1; ///< the earliest impact on this body, as a fraction of the step
     bool hadContactForce = false; ///< a contact-force or joint impulse acted on this body this step
+    /// The material its contacts mix (its own, or for a soft body's ellipse the soft body's): kept
+    /// here because building a contact would otherwise fetch it from the large model::Body.
+    Scalar friction = 0;
+    Scalar restitution = 0;
 };
 
 /// The velocity of B's material point at rB relative to A's at rA, m/s.
