@@ -928,59 +928,79 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
 
 void ContactSolver::colour(std::span<const SolverBody> bodies)
 {
+    // Halves 0 and 1 share no movable body, so they are coloured side by side; the constraints
+    // joining them follow. Then the groups' lanes are laid one after the other.
+    m_laneOf.resize(m_constraints.size());
+    m_colourMasks.assign(bodies.size(), 0);
+    runGroups([&](int g) { colourGroup(bodies, static_cast<std::size_t>(g)); });
+    m_batchLanes.clear();
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        m_batchGroupStart[g] = m_batchLanes.size() / kBatchLanes;
+        const auto offset = static_cast<std::uint32_t>(m_batchLanes.size());
+        m_batchLanes.insert(m_batchLanes.end(), m_groupLanes[g].begin(), m_groupLanes[g].end());
+        if (offset != 0) {
+            for (const std::uint32_t ci : m_groups[g])
+                m_laneOf[ci] += offset;
+        }
+    }
+    m_batchGroupStart[m_groups.size()] = m_batchLanes.size() / kBatchLanes;
+}
+
+void ContactSolver::colourGroup(std::span<const SolverBody> bodies, std::size_t g)
+{
     // Greedy colouring in the group's order: each constraint takes the lowest colour that none of
     // its movable bodies' constraints has taken yet. Fixed bodies are shared freely, as the batches
     // never write to them. A pile needs about a dozen colours; a constraint that finds all 64
     // taken is solved on its own after the batches.
     constexpr int kColours = 64;
-    m_batchLanes.clear();
-    m_laneOf.resize(m_constraints.size());
-    m_colourMasks.resize(bodies.size());
-    std::size_t batchCount = 0;
-    for (std::size_t g = 0; g < m_groups.size(); ++g) {
-        const std::vector<std::uint32_t>& group = m_groups[g];
-        m_batchGroupStart[g] = batchCount;
-        if (group.empty())
-            continue;
-        std::fill(m_colourMasks.begin(), m_colourMasks.end(), 0);
-        m_colourOf.resize(group.size());
-        std::array<std::size_t, kColours + 1> count{};
-        for (std::size_t k = 0; k < group.size(); ++k) {
-            const auto [bodyA, bodyB] = m_constraintBodies[group[k]];
-            const bool moveA = movable(bodies[bodyA]);
-            const bool moveB = movable(bodies[bodyB]);
-            const std::uint64_t taken = (moveA ? m_colourMasks[bodyA] : 0) | (moveB ? m_colourMasks[bodyB] : 0);
-            const int colour = std::countr_one(taken);
-            m_colourOf[k] = static_cast<std::uint8_t>(colour);
-            ++count[static_cast<std::size_t>(colour)];
-            if (colour == kColours)
-                continue;
-            const std::uint64_t bit = std::uint64_t{1} << colour;
-            if (moveA)
-                m_colourMasks[bodyA] |= bit;
-            if (moveB)
-                m_colourMasks[bodyB] |= bit;
+    const std::vector<std::uint32_t>& group = m_groups[g];
+    std::vector<std::uint32_t>& lanesOut = m_groupLanes[g];
+    lanesOut.clear();
+    if (group.empty())
+        return;
+    // The constraints joining the halves meet bodies that the halves have coloured already.
+    if (g == 2) {
+        for (const std::uint32_t ci : group) {
+            m_colourMasks[m_constraintBodies[ci][0]] = 0;
+            m_colourMasks[m_constraintBodies[ci][1]] = 0;
         }
-        // Each colour fills whole batches, the last one padded: lay the lanes out colour by colour,
-        // keeping the group's order within a colour.
-        std::array<std::size_t, kColours> firstLane{};
-        std::size_t lanes = m_batchLanes.size();
-        for (std::size_t colour = 0; colour < kColours; ++colour) {
-            firstLane[colour] = lanes;
-            lanes += (count[colour] + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
-        }
-        // A constraint that found every colour taken gets a batch of its own, after the others.
-        m_batchLanes.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
-        for (std::size_t k = 0; k < group.size(); ++k) {
-            const std::size_t lane = m_colourOf[k] < kColours ? firstLane[m_colourOf[k]]++ : lanes;
-            if (m_colourOf[k] == kColours)
-                lanes += kBatchLanes;
-            m_batchLanes[lane] = group[k];
-            m_laneOf[group[k]] = static_cast<std::uint32_t>(lane);
-        }
-        batchCount = lanes / kBatchLanes;
     }
-    m_batchGroupStart[m_groups.size()] = batchCount;
+    std::vector<std::uint8_t>& colourOf = m_colourOf[g];
+    colourOf.resize(group.size());
+    std::array<std::size_t, kColours + 1> count{};
+    for (std::size_t k = 0; k < group.size(); ++k) {
+        const auto [bodyA, bodyB] = m_constraintBodies[group[k]];
+        const bool moveA = movable(bodies[bodyA]);
+        const bool moveB = movable(bodies[bodyB]);
+        const std::uint64_t taken = (moveA ? m_colourMasks[bodyA] : 0) | (moveB ? m_colourMasks[bodyB] : 0);
+        const int colour = std::countr_one(taken);
+        colourOf[k] = static_cast<std::uint8_t>(colour);
+        ++count[static_cast<std::size_t>(colour)];
+        if (colour == kColours)
+            continue;
+        const std::uint64_t bit = std::uint64_t{1} << colour;
+        if (moveA)
+            m_colourMasks[bodyA] |= bit;
+        if (moveB)
+            m_colourMasks[bodyB] |= bit;
+    }
+    // Each colour fills whole batches, the last one padded: lay the lanes out colour by colour,
+    // keeping the group's order within a colour.
+    std::array<std::size_t, kColours> firstLane{};
+    std::size_t lanes = 0;
+    for (std::size_t colour = 0; colour < kColours; ++colour) {
+        firstLane[colour] = lanes;
+        lanes += (count[colour] + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
+    }
+    // A constraint that found every colour taken gets a batch of its own, after the others.
+    lanesOut.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
+    for (std::size_t k = 0; k < group.size(); ++k) {
+        const std::size_t lane = colourOf[k] < kColours ? firstLane[colourOf[k]]++ : lanes;
+        if (colourOf[k] == kColours)
+            lanes += kBatchLanes;
+        lanesOut[lane] = group[k];
+        m_laneOf[group[k]] = static_cast<std::uint32_t>(lane);
+    }
 }
 
 void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex)

@@ -201,6 +201,8 @@ private:
     void forEachGroup(const std::function<void(std::span<VelocityConstraint>, int)>& solve);
     /// Colours the constraints of each group and lays out the batches' lanes (partition()).
     void colour(std::span<const SolverBody> bodies);
+    /// Colours group g's constraints into m_groupLanes[g], and notes each one's lane there.
+    void colourGroup(std::span<const SolverBody> bodies, std::size_t g);
     /// Fills lane `laneIndex` of the batches of group g from its constraint (or as padding), for
     /// this step's velocity and position passes.
     void packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex);
@@ -283,7 +285,8 @@ private:
     /// write to one line.
     static constexpr std::size_t kScratchPoseStride = 3;
     std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
-    std::vector<std::uint8_t> m_colourOf; ///< per constraint of the group being coloured
+    std::array<std::vector<std::uint8_t>, 3> m_colourOf; ///< per group: each constraint's colour
+    std::array<std::vector<std::uint32_t>, 3> m_groupLanes; ///< per group: its lanes, from 0
     /// Where a lane writes a fixed body's velocity, one per group, each on its own cache line.
     std::array<SolverBody, 3> m_scratchBodies{};
 };

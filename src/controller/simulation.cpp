@@ -186,17 +186,8 @@ void Simulation::collide(const model::World& world, Scalar h)
     } else {
         collideRange(0, m_pairs.size());
     }
-    // The pairs without contact drop out, in place and in order: nothing moves while every pair
-    // has a contact, as in a resting pile.
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < m_manifolds.size(); ++k) {
-        if (m_manifolds[k].manifold.count == 0)
-            continue;
-        if (kept != k)
-            m_manifolds[kept] = m_manifolds[k];
-        ++kept;
-    }
-    m_manifolds.resize(kept);
+    // Pairs without contact keep their (empty) slots: ContactSolver::prepare skips them, and
+    // moving the others up would copy most of a pile's manifolds on one thread.
     m_profile.narrowMs += millisecondsSince(narrowStart);
 }
 
