@@ -3,6 +3,7 @@
 #include "controller/transform.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -26,8 +27,8 @@ Vec2 ellipseHalfExtents(Scalar a, Scalar b, Scalar c, Scalar s)
 
 } // namespace
 
-void ColliderSet::addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, std::uint32_t& nextEllipse,
-                              const Transform& xf, Scalar margin)
+void ColliderSet::addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, Cursor& at, const Transform& xf,
+                              Scalar margin)
 {
     const Vec2 semi = grid.semiAxes();
     // Square cells give circles, which collide in closed form; others true ellipses (GJK/EPA).
@@ -38,34 +39,94 @@ void ColliderSet::addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, s
         piece.kind = round ? ColliderPiece::Kind::Circle : ColliderPiece::Kind::Ellipse;
         piece.body = body;
         piece.piece = i;
-        piece.solver = nextEllipse++;
+        piece.solver = at.ellipse++;
         piece.center = grid.positions[i];
         piece.radiusX = semi.x();
         piece.radiusY = semi.y();
         piece.c = xf.c;
         piece.s = xf.s;
-        m_pieces.push_back(piece);
-        m_boxes.push_back(enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin));
+        m_pieces[at.piece] = piece;
+        m_boxes[at.piece] = enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin);
+        ++at.piece;
     }
 }
 
-void ColliderSet::build(const model::World& world, const std::vector<Scalar>& margins)
+std::size_t ColliderSet::firstGridFrom(const model::World& world, std::uint32_t body)
 {
-    m_pieces.clear();
-    m_boxes.clear();
-    m_vertices.clear();
-    m_normals.clear();
+    // Soft grids come in body order.
+    return static_cast<std::size_t>(
+        std::partition_point(world.softBodies.begin(), world.softBodies.end(),
+                             [&](const model::SoftGrid& grid) { return grid.body.index < body; }) -
+        world.softBodies.begin());
+}
 
-    // Soft grids come in body order, and so do their ellipses in the state list.
-    std::size_t nextGrid = 0;
-    auto nextEllipse = static_cast<std::uint32_t>(world.bodies.size());
-    for (std::uint32_t b = 0; b < world.bodies.size(); ++b) {
+ColliderSet::Cursor ColliderSet::count(const model::World& world, std::uint32_t begin, std::uint32_t end)
+{
+    Cursor total;
+    std::size_t nextGrid = firstGridFrom(world, begin);
+    for (std::uint32_t b = begin; b < end; ++b) {
+        const model::Body& body = world.bodies[b];
+        if (nextGrid < world.softBodies.size() && world.softBodies[nextGrid].body.index == b) {
+            const auto size = static_cast<std::uint32_t>(world.softBodies[nextGrid++].size());
+            total.piece += size;
+            total.ellipse += size;
+        } else if (std::holds_alternative<model::Circle>(body.shape) || std::holds_alternative<model::Ellipse>(body.shape)) {
+            ++total.piece;
+        } else {
+            for (const auto& piece : body.geometry.convexPieces) {
+                ++total.piece;
+                total.vertex += static_cast<std::uint32_t>(piece.size());
+            }
+        }
+    }
+    return total;
+}
+
+void ColliderSet::build(const model::World& world, const std::vector<Scalar>& margins, TaskPair* tasks)
+{
+    // Two passes, so that a large world can place each half of its bodies on its own thread:
+    // count each half's pieces and vertices, then write every piece to its place.
+    const auto n = static_cast<std::uint32_t>(world.bodies.size());
+    const std::uint32_t half = tasks ? n / 2 : n;
+    std::array<Cursor, 2> counts{};
+    const auto countHalf = [&](int part) {
+        counts[static_cast<std::size_t>(part)] = part == 0 ? count(world, 0, half) : count(world, half, n);
+    };
+    if (tasks) {
+        tasks->run(countHalf);
+    } else {
+        countHalf(0);
+        countHalf(1);
+    }
+    m_pieces.resize(counts[0].piece + counts[1].piece);
+    m_boxes.resize(m_pieces.size());
+    m_vertices.resize(counts[0].vertex + counts[1].vertex);
+    m_normals.resize(m_vertices.size());
+    // The ellipses' state entries follow the bodies (force_model.h, stateCount).
+    const Cursor first{0, 0, n};
+    const Cursor second{counts[0].piece, counts[0].vertex, n + counts[0].ellipse};
+    const auto placeHalf = [&](int part) {
+        part == 0 ? place(world, margins, 0, half, first) : place(world, margins, half, n, second);
+    };
+    if (tasks) {
+        tasks->run(placeHalf);
+    } else {
+        placeHalf(0);
+        placeHalf(1);
+    }
+}
+
+void ColliderSet::place(const model::World& world, const std::vector<Scalar>& margins, std::uint32_t begin,
+                        std::uint32_t end, Cursor at)
+{
+    std::size_t nextGrid = firstGridFrom(world, begin);
+    for (std::uint32_t b = begin; b < end; ++b) {
         const model::Body& body = world.bodies[b];
         const Transform xf = Transform::of(body.state);
         const Scalar margin = margins[b];
 
         if (nextGrid < world.softBodies.size() && world.softBodies[nextGrid].body.index == b) {
-            addSoftGrid(world.softBodies[nextGrid++], b, nextEllipse, xf, margin);
+            addSoftGrid(world.softBodies[nextGrid++], b, at, xf, margin);
             continue;
         }
 
@@ -76,9 +137,9 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
             piece.solver = b;
             piece.center = xf.position;
             piece.radiusX = circle->radius;
-            m_pieces.push_back(piece);
             const Vec2 r = Vec2::Constant(circle->radius);
-            m_boxes.push_back(enlarged(Aabb{Vec2(piece.center - r), Vec2(piece.center + r)}, margin));
+            m_pieces[at.piece] = piece;
+            m_boxes[at.piece++] = enlarged(Aabb{Vec2(piece.center - r), Vec2(piece.center + r)}, margin);
             continue;
         }
         if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape)) {
@@ -91,9 +152,9 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
             piece.radiusY = ellipse->radiusY;
             piece.c = xf.c;
             piece.s = xf.s;
-            m_pieces.push_back(piece);
             const Vec2 half = ellipseHalfExtents(ellipse->radiusX, ellipse->radiusY, xf.c, xf.s);
-            m_boxes.push_back(enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin));
+            m_pieces[at.piece] = piece;
+            m_boxes[at.piece++] = enlarged(Aabb{Vec2(piece.center - half), Vec2(piece.center + half)}, margin);
             continue;
         }
 
@@ -104,22 +165,22 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
             piece.body = b;
             piece.solver = b;
             piece.piece = k;
-            piece.firstVertex = static_cast<std::uint32_t>(m_vertices.size());
+            piece.firstVertex = at.vertex;
             piece.vertexCount = static_cast<std::uint32_t>(pieces[k].size());
             Aabb box{Vec2::Constant(INFINITY), Vec2::Constant(-INFINITY)};
             Vec2 sum = Vec2::Zero();
             for (std::size_t i = 0; i < pieces[k].size(); ++i) {
                 const Vec2 v = xf.apply(pieces[k][i]);
-                m_vertices.push_back(v);
-                m_normals.push_back(xf.rotate(body.geometry.pieceNormals[k][i]));
+                m_vertices[at.vertex] = v;
+                m_normals[at.vertex++] = xf.rotate(body.geometry.pieceNormals[k][i]);
                 box.lower = box.lower.cwiseMin(v);
                 box.upper = box.upper.cwiseMax(v);
                 sum += v;
             }
             // The vertex mean is inside a convex piece, which is all the narrow phase asks of it.
             piece.center = sum / static_cast<Scalar>(pieces[k].size());
-            m_pieces.push_back(piece);
-            m_boxes.push_back(enlarged(box, margin));
+            m_pieces[at.piece] = piece;
+            m_boxes[at.piece++] = enlarged(box, margin);
         }
     }
 }

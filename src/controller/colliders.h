@@ -4,6 +4,7 @@
 
 #include "controller/collision_types.h"
 #include "controller/narrow_phase.h"
+#include "controller/task_pair.h"
 #include "controller/transform.h"
 #include "model/scalar.h"
 #include "model/world.h"
@@ -39,7 +40,8 @@ public:
     /// of body i's pieces: how far the body may travel relative to anything in one step. A soft
     /// body's pieces are the ellipses of its grid (circles when its cells are square), turned by
     /// the body's best-fit angle.
-    void build(const model::World& world, const std::vector<Scalar>& margins);
+    /// With `tasks`, each half of the bodies is placed on its own thread (the same result).
+    void build(const model::World& world, const std::vector<Scalar>& margins, TaskPair* tasks = nullptr);
 
     const std::vector<ColliderPiece>& pieces() const { return m_pieces; }
     const std::vector<Aabb>& boxes() const { return m_boxes; }
@@ -57,9 +59,21 @@ public:
     }
 
 private:
-    /// Adds the ellipses of a soft body's grid, numbering their state entries from nextEllipse.
-    void addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, std::uint32_t& nextEllipse,
-                     const Transform& xf, Scalar margin);
+    /// Where the next piece, vertex and soft-grid ellipse state entry go; or, as a count, how many.
+    struct Cursor {
+        std::uint32_t piece = 0;
+        std::uint32_t vertex = 0;
+        std::uint32_t ellipse = 0;
+    };
+    /// The first soft grid whose body is `body` or later.
+    static std::size_t firstGridFrom(const model::World& world, std::uint32_t body);
+    /// The pieces, vertices and ellipses of bodies [begin, end).
+    static Cursor count(const model::World& world, std::uint32_t begin, std::uint32_t end);
+    /// Places the pieces of bodies [begin, end) from `at` on.
+    void place(const model::World& world, const std::vector<Scalar>& margins, std::uint32_t begin, std::uint32_t end,
+               Cursor at);
+    /// Places the ellipses of a soft body's grid from `at` on, moving it past them.
+    void addSoftGrid(const model::SoftGrid& grid, std::uint32_t body, Cursor& at, const Transform& xf, Scalar margin);
 
     std::vector<ColliderPiece> m_pieces;
     std::vector<Aabb> m_boxes;

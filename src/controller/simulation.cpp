@@ -145,7 +145,7 @@ void Simulation::collide(const model::World& world, Scalar h)
         }
         m_margins[grid.body.index] = constants::kSpeculativeMargin + travel + 2 * h * fastest;
     }
-    m_colliders.build(world, m_margins);
+    m_colliders.build(world, m_margins, bodyTasks(world));
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
     if (world.softBodies.empty()) {
         m_proxies.resize(pieces.size());
