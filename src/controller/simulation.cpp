@@ -4,6 +4,7 @@
 #include "controller/soft_body_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -114,27 +115,43 @@ void Simulation::collide(const model::World& world, Scalar h)
     // fastest body's speed, and a struck ball finds the wall just behind it.
     // One pass over the bodies: each one's margin without the fastest body's share (its surface
     // speed computed once, for both), then that share once the fastest is known.
-    Scalar fastest = 0;
+    // A large world does each half of its bodies on its own thread; the fastest speed is the
+    // larger of the halves' (a maximum, so the same either way).
     m_margins.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const model::Body& body = world.bodies[i];
-        const model::BodyState& s = body.state;
-        const BodyDerivative& d = m_startDerivatives[i];
-        const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
-        if (!body.fixed)
-            fastest = std::max(fastest, speed);
-        m_margins[i] = constants::kSpeculativeMargin;
-        m_margins[i] += h * speed +
-                        h * h * (d.acceleration.norm() + std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+    std::array<Scalar, 2> fastestOf{};
+    const auto ownMargins = [&](std::size_t begin, std::size_t end) {
+        Scalar fastest = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const model::Body& body = world.bodies[i];
+            const model::BodyState& s = m_startStates[i];
+            const BodyDerivative& d = m_startDerivatives[i];
+            const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
+            if (!body.fixed)
+                fastest = std::max(fastest, speed);
+            m_margins[i] = constants::kSpeculativeMargin;
+            m_margins[i] += h * speed + h * h * (d.acceleration.norm() +
+                                                 std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
+        }
+        return fastest;
+    };
+    TaskPair* const tasks = bodyTasks(world);
+    if (tasks) {
+        tasks->run([&](int part) {
+            fastestOf[static_cast<std::size_t>(part)] = part == 0 ? ownMargins(0, n / 2) : ownMargins(n / 2, n);
+        });
+    } else {
+        fastestOf[0] = ownMargins(0, n);
     }
+    Scalar fastest = std::max(fastestOf[0], fastestOf[1]);
     for (std::size_t i = n; i < m_startStates.size(); ++i)
         fastest = std::max(fastest, m_startStates[i].velocity.norm());
-    // m_entries (setUpSolverBodies) tells the fixed bodies without another pass over the large
-    // Body records; a soft body's margin is set afresh below.
-    for (std::size_t i = 0; i < n; ++i) {
-        if (m_entries[i] != Entry::Fixed)
-            m_margins[i] += 2 * h * fastest;
-    }
+    // A soft body's margin is set afresh below.
+    inHalves(tasks, n, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (m_entries[i] != Entry::Fixed)
+                m_margins[i] += 2 * h * fastest;
+        }
+    });
     // A soft body's pieces are its ellipses: its margin is the farthest any of them can move.
     std::size_t next = n;
     for (const model::SoftGrid& grid : world.softBodies) {
@@ -145,12 +162,16 @@ void Simulation::collide(const model::World& world, Scalar h)
         }
         m_margins[grid.body.index] = constants::kSpeculativeMargin + travel + 2 * h * fastest;
     }
-    m_colliders.build(world, m_margins, bodyTasks(world));
+    m_colliders.build(world, m_margins, tasks);
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
     if (world.softBodies.empty()) {
         m_proxies.resize(pieces.size());
-        for (std::size_t i = 0; i < pieces.size(); ++i)
-            m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body, world.bodies[pieces[i].body].fixed};
+        inHalves(tasks, pieces.size(), [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                m_proxies[i] = BroadPhaseProxy{m_colliders.boxes()[i], pieces[i].body,
+                                               m_entries[pieces[i].body] == Entry::Fixed};
+            }
+        });
         m_broadPhase.findPairs(m_proxies, m_pairs);
     } else {
         findPairsWithSoftBodies(world);
