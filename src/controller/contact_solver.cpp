@@ -347,8 +347,16 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
                                                       manifolds.begin() + static_cast<std::ptrdiff_t>(end),
                                                       [](const PairManifold& pm) { return pm.manifold.count > 0; }));
     };
-    const std::size_t firstCount = nonEmpty(0, half);
-    const std::size_t count = firstCount + nonEmpty(half, manifolds.size());
+    std::array<std::size_t, 2> counts{};
+    if (split) {
+        m_tasks->run([&](int part) {
+            counts[static_cast<std::size_t>(part)] = part == 0 ? nonEmpty(0, half) : nonEmpty(half, manifolds.size());
+        });
+    } else {
+        counts[0] = nonEmpty(0, manifolds.size());
+    }
+    const std::size_t firstCount = counts[0];
+    const std::size_t count = counts[0] + counts[1];
     m_constraints.resize(count);
     m_constraintBodies.resize(count);
     m_records.resize(count);
