@@ -374,9 +374,9 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
         numberConstraints(manifolds, previous, 0, manifolds.size(), 0);
     }
 
-    // The solving order comes next, as it needs only the constraints' bodies. Then a batched
-    // world builds each group's constraints on that group's thread and writes each into its batch
-    // lane while it is at hand; another world builds them in two halves of their list.
+    // The solving order comes next, as it needs only the constraints' bodies. Then each group's
+    // constraints are built on that group's thread; a batched world writes each into its batch
+    // lane while it is at hand.
     partition(bodies);
     for (std::size_t part = 0; part < m_preparedCandidates.size(); ++part) {
         m_preparedCandidates[part].clear();
@@ -385,25 +385,18 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     if (m_batched) {
         m_batches.resize(m_batchLanes.size() / kBatchLanes);
         m_positionBatches.resize(m_batches.size());
-        runGroups([&](int g) {
-            const auto ug = static_cast<std::size_t>(g);
-            m_scratchBodies[ug] = SolverBody{};
-            buildConstraints(world, manifolds, bodies, derivatives, m_groups[ug], h, ug);
-            for (std::size_t lane = m_batchGroupStart[ug] * kBatchLanes; lane < m_batchGroupStart[ug + 1] * kBatchLanes;
-                 ++lane) {
-                if (m_batchLanes[lane] == kNoConstraint)
-                    packLane(bodies, h, ug, lane);
-            }
-        });
-    } else if (split) {
-        const std::span<const std::uint32_t> all(m_groups[0]);
-        m_tasks->run([&](int part) {
-            part == 0 ? buildConstraints(world, manifolds, bodies, derivatives, all.first(count / 2), h, 0)
-                      : buildConstraints(world, manifolds, bodies, derivatives, all.subspan(count / 2), h, 1);
-        });
-    } else {
-        buildConstraints(world, manifolds, bodies, derivatives, m_groups[0], h, 0);
     }
+    runGroups([&](int g) {
+        const auto ug = static_cast<std::size_t>(g);
+        m_scratchBodies[ug] = SolverBody{};
+        buildConstraints(world, manifolds, bodies, derivatives, m_groups[ug], h, ug);
+        if (!m_batched)
+            return;
+        for (std::size_t lane = m_batchGroupStart[ug] * kBatchLanes; lane < m_batchGroupStart[ug + 1] * kBatchLanes; ++lane) {
+            if (m_batchLanes[lane] == kNoConstraint)
+                packLane(bodies, h, ug, lane);
+        }
+    });
 }
 
 void ContactSolver::numberConstraints(std::span<const PairManifold> manifolds,

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace impetus::controller {
 namespace {
@@ -118,6 +119,28 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     EXPECT_GE(events, static_cast<std::size_t>(withThread.profile().contacts));
     EXPECT_EQ(twoThreads.collisionCount, static_cast<std::int64_t>(events));
     EXPECT_EQ(twoThreads, oneThread);
+}
+
+// The same without batches: a split world's constraints are built by group, one contact at a time.
+TEST(Determinism, ASplitWorldWithoutBatchesGivesTheSameBitsOnOneThreadOrTwo)
+{
+    model::World twoThreads = model::makePyramid(40);
+    model::World oneThread = twoThreads;
+    SolverSettings unbatched = settingsUnderTest();
+    unbatched.batchMinConstraints = std::numeric_limits<std::size_t>::max();
+    SolverSettings single = unbatched;
+    single.secondThread = false;
+    Simulation withThread(unbatched);
+    Simulation withoutThread(single);
+    const Vec2 topStart = twoThreads.bodies.back().state.position;
+    for (int i = 0; i < 120; ++i) {
+        withThread.step(twoThreads);
+        withoutThread.step(oneThread);
+    }
+    ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
+    EXPECT_EQ(twoThreads, oneThread);
+    // And the pyramid stands: its top box has not moved by more than the settling of its rows.
+    EXPECT_LT((twoThreads.bodies.back().state.position - topStart).norm(), 0.05);
 }
 
 // Batches of their own for contacts that find every colour taken, in a world split over two
