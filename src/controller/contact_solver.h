@@ -280,9 +280,10 @@ private:
     /// Per body, then one scratch pose per group, kScratchPoseStride apart: the poses of a batched
     /// step's position passes.
     std::vector<BatchPose> m_poses;
-    /// Poses apart between two groups' scratch poses: 3 × 40 bytes leave a whole cache line between
-    /// them, so the two threads, which write theirs for every fixed body and padding lane, never
-    /// write to one line.
+    /// Poses apart between two groups' scratch poses, which the two threads write for every fixed
+    /// body and padding lane. A BatchPose is one cache line, so any stride keeps them on lines of
+    /// their own; 3 also keeps them out of one 128-byte pair of lines, which the processor's
+    /// adjacent-line prefetcher fetches together.
     static constexpr std::size_t kScratchPoseStride = 3;
     std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
     std::array<std::vector<std::uint8_t>, 3> m_colourOf; ///< per group: each constraint's colour
