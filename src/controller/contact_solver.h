@@ -189,9 +189,6 @@ private:
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                           std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                           std::span<const std::uint32_t> indices, Scalar h, std::size_t part);
-    /// Runs work(begin, end) over the body indices [0, count): in two halves side by side when
-    /// `split` and there is a second thread, else all at once. Each index is written by one half.
-    void overBodyHalves(bool split, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
     /// Fills m_rotations with every body's (cos, sin) of its angle.
     void computeRotations(std::span<const SolverBody> bodies, bool split);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
