@@ -19,11 +19,11 @@ struct LaneVelocities {
 // Loading and storing go lane by lane: the bodies lie anywhere in memory. No two lanes of a batch
 // share a movable body, so the stores never overwrite one another. (Loading whole 256-bit rows and
 // transposing them was tried and was slower.)
-[[gnu::always_inline]] inline LaneVelocities load(const std::array<const SolverBody*, kBatchLanes>& bodies)
+[[gnu::always_inline]] inline LaneVelocities load(const std::array<const BatchBody*, kBatchLanes>& bodies)
 {
     LaneVelocities v;
     for (int lane = 0; lane < kBatchLanes; ++lane) {
-        const SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
+        const BatchBody& body = *bodies[static_cast<std::size_t>(lane)];
         v.x[lane] = body.velocity.x();
         v.y[lane] = body.velocity.y();
         v.angular[lane] = body.angularVelocity;
@@ -33,10 +33,10 @@ struct LaneVelocities {
     return v;
 }
 
-[[gnu::always_inline]] inline void store(const std::array<SolverBody*, kBatchLanes>& bodies, const LaneVelocities& v)
+[[gnu::always_inline]] inline void store(const std::array<BatchBody*, kBatchLanes>& bodies, const LaneVelocities& v)
 {
     for (int lane = 0; lane < kBatchLanes; ++lane) {
-        SolverBody& body = *bodies[static_cast<std::size_t>(lane)];
+        BatchBody& body = *bodies[static_cast<std::size_t>(lane)];
         body.velocity = Vec2(v.x[lane], v.y[lane]);
         body.angularVelocity = v.angular[lane];
     }

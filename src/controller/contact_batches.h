@@ -27,6 +27,17 @@ using Lanes = Scalar __attribute__((vector_size(kBatchLanes * sizeof(Scalar)), a
 using LaneMask = std::int64_t
     __attribute__((vector_size(kBatchLanes * sizeof(std::int64_t)), aligned(kBatchLanes * sizeof(std::int64_t))));
 
+/// A body as the batched velocity passes see it: its velocity and inverse mass properties, one
+/// cache line each. The passes work on copies of the solver bodies laid out by half (see
+/// ContactSolver): each thread's bodies lie together in memory, so that the processor fetching
+/// the lines next to the ones a thread reads never takes lines the other thread is writing.
+struct alignas(64) BatchBody {
+    Vec2 velocity = Vec2::Zero(); ///< m/s
+    Scalar angularVelocity = 0; ///< rad/s
+    Scalar invMass = 0; ///< 1/kg
+    Scalar invInertia = 0; ///< 1/(kg·m²)
+};
+
 /// One contact point of every lane. The arms are the lever arms' cross products with the
 /// contact's normal and tangent, r × n and r × t (m), which is all the angular terms need.
 struct BatchPoint {
@@ -56,13 +67,13 @@ struct ContactBatch {
     LaneMask acted{}; ///< an impulse acted on this lane's bodies this step
     std::array<BatchPoint, 2> points{};
     /// The bodies each lane reads its velocities from.
-    std::array<const SolverBody*, kBatchLanes> bodyA{};
-    std::array<const SolverBody*, kBatchLanes> bodyB{};
+    std::array<const BatchBody*, kBatchLanes> bodyA{};
+    std::array<const BatchBody*, kBatchLanes> bodyB{};
     /// Where each lane writes them back: the body itself, or for a fixed body (whose velocity an
     /// impulse never changes) a scratch body, so that batches on two threads never write to one
     /// shared ground.
-    std::array<SolverBody*, kBatchLanes> writeA{};
-    std::array<SolverBody*, kBatchLanes> writeB{};
+    std::array<BatchBody*, kBatchLanes> writeA{};
+    std::array<BatchBody*, kBatchLanes> writeB{};
 };
 
 /// A body's pose as the batched position passes see it, with the cosine and sine of its angle kept

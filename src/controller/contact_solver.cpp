@@ -384,7 +384,6 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     }
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
-        m_scratchBodies[ug] = SolverBody{};
         buildConstraints(world, manifolds, bodies, derivatives, m_groups[ug], h, ug);
         if (!m_batched)
             return;
@@ -707,13 +706,17 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     }
 }
 
-void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
+void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h, bool sharedVelocities)
 {
+    m_sharedVelocities = sharedVelocities;
     // The velocity passes see only what they need, packed in solving order: a third of the
     // constraint's size, read front to back, eight times a step.
     if (m_batched) {
         // prepare() has filled the batches.
+        copyVelocitiesIn(bodies);
         runGroups([&](int g) { warmStartBatches(batchesOf(static_cast<std::size_t>(g))); });
+        if (m_sharedVelocities)
+            copyVelocitiesOut(bodies);
         return;
     }
     m_velocityConstraints.resize(m_constraints.size());
@@ -771,7 +774,11 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h)
 void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
 {
     if (m_batched) {
+        if (m_sharedVelocities)
+            copyVelocitiesIn(bodies);
         runGroups([&](int g) { solveBatches(batchesOf(static_cast<std::size_t>(g))); });
+        if (m_sharedVelocities)
+            copyVelocitiesOut(bodies);
         return;
     }
     forEachGroup([&](std::span<VelocityConstraint> group, int) {
@@ -798,9 +805,11 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
         }
         return;
     }
-    // Each group writes its own records and marks its own movable bodies (the write pointers of a
-    // fixed body lead to an unmovable scratch body, which markContactForce leaves alone), so the
-    // halves of a split world can do this side by side too.
+    // The velocities go back to the bodies, each half's on its own thread (unless every pass has
+    // handed them back already). Each group writes its own records and marks its own movable
+    // bodies, so the halves of a split world can do this side by side too.
+    if (!m_sharedVelocities)
+        copyVelocitiesOut(bodies);
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
         for (std::size_t bi = m_batchGroupStart[ug]; bi < m_batchGroupStart[ug + 1]; ++bi) {
@@ -814,7 +823,7 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
                 for (std::size_t i = 0; i < r.pointCount; ++i)
                     finishRecord(r, i, batch.points[i].normalImpulse[lane], batch.points[i].tangentImpulse[lane]);
                 if (batch.acted[lane] != 0)
-                    markContactForce(*batch.writeA[ul], *batch.writeB[ul]);
+                    markContactForce(bodies[m_constraintBodies[ci][0]], bodies[m_constraintBodies[ci][1]]);
             }
         }
     });
@@ -848,14 +857,13 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
     // The poses, with their cosines and sines, are taken from the bodies only when something else
     // may have moved them; the passes keep both up to date, and hand the poses back after each
     // pass. Each half of a split world does its own bodies.
-    const std::size_t count = bodies.size();
-    if (turnedElsewhere || m_poses.size() != count + kScratchPoseStride * m_scratchBodies.size()) {
-        m_poses.resize(count + kScratchPoseStride * m_scratchBodies.size());
-        inHalves(m_split ? m_tasks : nullptr, count, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const SolverBody& body = bodies[i];
-                m_poses[i] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
-                                       std::sin(body.angle)};
+    // They are kept by slot, as the velocities are (assignSlots).
+    if (turnedElsewhere) {
+        inSlotHalves(m_bodyOfSlot.size(), [&](std::size_t begin, std::size_t end) {
+            for (std::size_t slot = begin; slot < end; ++slot) {
+                const SolverBody& body = bodies[m_bodyOfSlot[slot]];
+                m_poses[slot] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
+                                          std::sin(body.angle)};
             }
         });
     }
@@ -866,12 +874,13 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
                                                .subspan(m_batchGroupStart[ug], m_batchGroupStart[ug + 1] - m_batchGroupStart[ug]),
                                            m_poses);
     });
-    inHalves(m_split ? m_tasks : nullptr, count, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            if (!movable(bodies[i]))
+    inSlotHalves(m_movableSlots, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t slot = begin; slot < end; ++slot) {
+            SolverBody& body = bodies[m_bodyOfSlot[slot]];
+            if (!movable(body))
                 continue;
-            bodies[i].position = Vec2(m_poses[i].x, m_poses[i].y);
-            bodies[i].angle = m_poses[i].angle;
+            body.position = Vec2(m_poses[slot].x, m_poses[slot].y);
+            body.angle = m_poses[slot].angle;
         }
     });
     return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
@@ -887,8 +896,10 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
         m_groups[0].resize(m_constraints.size());
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
             m_groups[0][ci] = ci;
-        if (m_batched)
+        if (m_batched) {
+            assignSlots(bodies);
             colour(bodies);
+        }
         return;
     }
     // Cut the movable bodies into two halves at the median of their positions along the longer
@@ -920,8 +931,81 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
         const std::uint8_t half = ha == kFixedHalf ? hb : (hb == kFixedHalf || hb == ha ? ha : 2);
         m_groups[half == kFixedHalf ? 0 : half].push_back(ci);
     }
-    if (m_batched)
+    if (m_batched) {
+        assignSlots(bodies);
         colour(bodies);
+    }
+}
+
+void ContactSolver::assignSlots(std::span<const SolverBody> bodies)
+{
+    const std::size_t count = bodies.size();
+    m_slotOf.resize(count);
+    m_bodyOfSlot.resize(count);
+    m_batchBodies.resize(count + kScratchSlots);
+    m_poses.resize(count + kScratchSlots);
+    if (!m_split) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            m_slotOf[i] = i;
+            m_bodyOfSlot[i] = i;
+        }
+        m_firstHalfSlots = count;
+        m_movableSlots = count;
+        return;
+    }
+    // Each half's movable bodies in their own order, then the rest (m_half is kFixedHalf).
+    std::uint32_t next = 0;
+    for (const std::uint8_t half : {std::uint8_t{0}, std::uint8_t{1}, kFixedHalf}) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (m_half[i] != half)
+                continue;
+            m_slotOf[i] = next;
+            m_bodyOfSlot[next++] = i;
+        }
+        if (half == 0)
+            m_firstHalfSlots = next;
+        else if (half == 1)
+            m_movableSlots = next;
+    }
+}
+
+void ContactSolver::inSlotHalves(std::size_t count, const std::function<void(std::size_t, std::size_t)>& work)
+{
+    if (m_split && m_tasks) {
+        const std::size_t cut = std::min(m_firstHalfSlots, count);
+        m_tasks->run([&](int part) { part == 0 ? work(0, cut) : work(cut, count); });
+    } else {
+        work(0, count);
+    }
+}
+
+void ContactSolver::copyVelocitiesIn(std::span<const SolverBody> bodies)
+{
+    for (std::size_t g = 0; g < m_groups.size(); ++g)
+        m_batchBodies[scratchSlot(g)] = BatchBody{};
+    inSlotHalves(m_bodyOfSlot.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t slot = begin; slot < end; ++slot) {
+            const SolverBody& body = bodies[m_bodyOfSlot[slot]];
+            BatchBody& copy = m_batchBodies[slot];
+            copy.velocity = body.velocity;
+            copy.angularVelocity = body.angularVelocity;
+            copy.invMass = body.invMass;
+            copy.invInertia = body.invInertia;
+        }
+    });
+}
+
+void ContactSolver::copyVelocitiesOut(std::span<SolverBody> bodies)
+{
+    // Only the slots the passes write to: a split world's fixed bodies, which both threads read,
+    // are never written.
+    inSlotHalves(m_movableSlots, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t slot = begin; slot < end; ++slot) {
+            SolverBody& body = bodies[m_bodyOfSlot[slot]];
+            body.velocity = m_batchBodies[slot].velocity;
+            body.angularVelocity = m_batchBodies[slot].angularVelocity;
+        }
+    });
 }
 
 void ContactSolver::colour(std::span<const SolverBody> bodies)
@@ -1004,8 +1088,7 @@ void ContactSolver::colourGroup(std::span<const SolverBody> bodies, std::size_t 
 void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t g, std::size_t laneIndex)
 {
     // Every field of the lane is written, padding included: nothing is cleared first.
-    SolverBody& scratch = m_scratchBodies[g];
-    const auto scratchPose = static_cast<std::uint32_t>(bodies.size() + kScratchPoseStride * g);
+    const std::uint32_t scratch = scratchSlot(g);
     const std::size_t bi = laneIndex / kBatchLanes;
     const auto lane = static_cast<int>(laneIndex % kBatchLanes);
     const auto ul = static_cast<std::size_t>(lane);
@@ -1016,20 +1099,24 @@ void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t
     // acts.
     const ContactConstraint* c = ci == kNoConstraint ? nullptr : &m_constraints[ci];
     const bool two = c && c->pointCount == 2;
-    const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const SolverBody*, kBatchLanes>& read,
-                          std::array<SolverBody*, kBatchLanes>& write, std::array<std::uint32_t, kBatchLanes>& readPose,
+    const auto side = [&](std::uint32_t ContactConstraint::*body, std::array<const BatchBody*, kBatchLanes>& read,
+                          std::array<BatchBody*, kBatchLanes>& write, std::array<std::uint32_t, kBatchLanes>& readPose,
                           std::array<std::uint32_t, kBatchLanes>& writePose) {
         const std::uint32_t index = c ? c->*body : 0;
         const bool moves = c && movable(bodies[index]);
-        read[ul] = c ? &bodies[index] : &scratch;
-        write[ul] = moves ? &bodies[index] : &scratch;
-        readPose[ul] = c ? index : scratchPose;
-        writePose[ul] = moves ? index : scratchPose;
+        const std::uint32_t readSlot = c ? m_slotOf[index] : scratch;
+        const std::uint32_t writeSlot = moves ? readSlot : scratch;
+        read[ul] = &m_batchBodies[readSlot];
+        write[ul] = &m_batchBodies[writeSlot];
+        readPose[ul] = readSlot;
+        writePose[ul] = writeSlot;
     };
     side(&ContactConstraint::bodyA, batch.bodyA, batch.writeA, positions.readA, positions.writeA);
     side(&ContactConstraint::bodyB, batch.bodyB, batch.writeB, positions.readB, positions.writeB);
-    const SolverBody& a = *batch.bodyA[ul];
-    const SolverBody& b = *batch.bodyB[ul];
+    // A padding lane's bodies cannot move.
+    static const SolverBody fixedBody;
+    const SolverBody& a = c ? bodies[c->bodyA] : fixedBody;
+    const SolverBody& b = c ? bodies[c->bodyB] : fixedBody;
     const Vec2 n = c ? c->normal : Vec2::Zero();
     const Vec2 t = tangentOf(n);
     batch.normalX[lane] = n.x();

@@ -414,7 +414,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         syncSoftAggregates(world);
     m_jointSolver.warmStart(m_bodies);
-    m_contactSolver.warmStart(m_bodies, h);
+    m_contactSolver.warmStart(m_bodies, h, !m_jointSolver.empty());
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
         m_jointSolver.solveVelocities(m_bodies, h);
         m_contactSolver.solveVelocities(m_bodies);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -36,6 +37,25 @@ std::uint64_t hashPoses(const model::World& world)
         mix(body.state.angularVelocity);
     }
     return hash;
+}
+
+/// Runs a copy of `start` for `steps` steps with the second thread and another without it, expects
+/// a world large enough to be split and the same bits either way, and returns the first.
+model::World runOnOneThreadAndTwo(const model::World& start, const SolverSettings& settings, int steps)
+{
+    model::World twoThreads = start;
+    model::World oneThread = start;
+    SolverSettings single = settings;
+    single.secondThread = false;
+    Simulation withThread(settings);
+    Simulation withoutThread(single);
+    for (int i = 0; i < steps; ++i) {
+        withThread.step(twoThreads);
+        withoutThread.step(oneThread);
+    }
+    EXPECT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
+    EXPECT_EQ(twoThreads, oneThread);
+    return twoThreads;
 }
 
 model::World runPyramid(int steps)
@@ -121,24 +141,78 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     EXPECT_EQ(twoThreads, oneThread);
 }
 
+// A split world with joints: the joints change the bodies' velocities between the contacts'
+// passes, which then start from the bodies and hand their result back every pass. Rods tie each
+// box of the pyramid's fifth row to its right-hand neighbour, a pin holds the top box to the world
+// where it stands, and off to the side a bob on a rod leans on a frictionless block (as in
+// Pendulum.BobLeaningOnAWallFeelsMgTanTheta). One thread and two give the same bits, the rods
+// keep their length, and the block pushes the bob with m·g·tan θ.
+TEST(Determinism, ASplitWorldWithJointsGivesTheSameBitsOnOneThreadOrTwo)
+{
+    const int base = 40;
+    model::World world = model::makePyramid(base);
+    // makePyramid adds the ground, then the rows from the bottom up, each from left to right.
+    const std::size_t rowStart = 1 + static_cast<std::size_t>(base + (base - 1) + (base - 2) + (base - 3));
+    const std::size_t rowCount = static_cast<std::size_t>(base - 4);
+    for (std::size_t k = rowStart; k + 1 < rowStart + rowCount; ++k) {
+        model::Joint rod;
+        rod.type = model::JointType::Rod;
+        rod.bodyA = model::BodyId{static_cast<std::uint32_t>(k)};
+        rod.bodyB = model::BodyId{static_cast<std::uint32_t>(k + 1)};
+        rod.length = (world.bodies[k + 1].state.position - world.bodies[k].state.position).norm();
+        world.joints.push_back(rod);
+    }
+    const auto topId = model::BodyId{static_cast<std::uint32_t>(world.bodies.size() - 1)};
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = topId;
+    pin.worldAnchor = world.body(topId).state.position;
+    pin.anchorA = Vec2::Zero();
+    pin.anchorB = pin.worldAnchor;
+    world.joints.push_back(pin);
+    // The block's right face is at x = 0.5 from the pivot, the bob's left face rests on it.
+    const Vec2 pivot(2.0 * base, 20);
+    const Scalar length = 1.5;
+    const Scalar x = 0.6;
+    const Scalar y = -std::sqrt(length * length - x * x);
+    world.bodies.push_back(
+        testing::withMaterial(testing::makeGround("block", 1.0, 2.0, pivot + Vec2(0.0, -0.5)), 0.0, 0.0));
+    world.bodies.push_back(
+        testing::withMaterial(testing::makeBox("bob", 1.0, 0.2, 0.2, pivot + Vec2(x, y)), 0.0, 0.0));
+    const auto bobId = model::BodyId{static_cast<std::uint32_t>(world.bodies.size() - 1)};
+    model::Joint hang;
+    hang.type = model::JointType::Rod;
+    hang.bodyA = bobId;
+    hang.bodyB = std::nullopt;
+    hang.anchorB = pivot;
+    hang.length = length;
+    world.joints.push_back(hang);
+
+    world = runOnOneThreadAndTwo(world, settingsUnderTest(), 120);
+    Scalar push = 0;
+    for (const model::ContactRecord& r : world.contacts) {
+        if (r.bodyB == bobId || r.bodyA == bobId)
+            push += (r.normalImpulses[0] + r.normalImpulses[1]) / world.settings.timeStep;
+    }
+    const Scalar weight = world.body(bobId).mass * -world.settings.gravity.y();
+    EXPECT_NEAR(push, weight * (x / -y), 1e-6 * weight);
+    for (const model::Joint& joint : world.joints) {
+        const Vec2 end = joint.bodyB ? world.body(*joint.bodyB).state.position : joint.anchorB;
+        if (joint.type == model::JointType::Rod) {
+            EXPECT_NEAR((end - world.body(joint.bodyA).state.position).norm(), joint.length, 1e-3);
+        }
+    }
+    EXPECT_NEAR((world.body(topId).state.position - pin.worldAnchor).norm(), 0.0, 1e-3);
+}
+
 // The same without batches: a split world's constraints are built by group, one contact at a time.
 TEST(Determinism, ASplitWorldWithoutBatchesGivesTheSameBitsOnOneThreadOrTwo)
 {
-    model::World twoThreads = model::makePyramid(40);
-    model::World oneThread = twoThreads;
+    const model::World start = model::makePyramid(40);
     SolverSettings unbatched = settingsUnderTest();
     unbatched.batchMinConstraints = std::numeric_limits<std::size_t>::max();
-    SolverSettings single = unbatched;
-    single.secondThread = false;
-    Simulation withThread(unbatched);
-    Simulation withoutThread(single);
-    const Vec2 topStart = twoThreads.bodies.back().state.position;
-    for (int i = 0; i < 120; ++i) {
-        withThread.step(twoThreads);
-        withoutThread.step(oneThread);
-    }
-    ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
-    EXPECT_EQ(twoThreads, oneThread);
+    const model::World twoThreads = runOnOneThreadAndTwo(start, unbatched, 120);
+    const Vec2 topStart = start.bodies.back().state.position;
     // And the pyramid stands: its top box has not moved by more than the settling of its rows.
     EXPECT_LT((twoThreads.bodies.back().state.position - topStart).norm(), 0.05);
 }
@@ -147,20 +221,9 @@ TEST(Determinism, ASplitWorldWithoutBatchesGivesTheSameBitsOnOneThreadOrTwo)
 // threads: 8 planks carrying 70 balls each (over 512 contacts) give the same bits either way.
 TEST(Determinism, OverflowingColoursGiveTheSameBitsOnOneThreadOrTwo)
 {
-    model::World twoThreads = testing::makeLoadedPlanks(8, 70);
-    model::World oneThread = twoThreads;
     SolverSettings batched = settingsUnderTest();
     batched.batchMinConstraints = 0;
-    SolverSettings single = batched;
-    single.secondThread = false;
-    Simulation withThread(batched);
-    Simulation withoutThread(single);
-    for (int i = 0; i < 120; ++i) {
-        withThread.step(twoThreads);
-        withoutThread.step(oneThread);
-    }
-    ASSERT_GE(static_cast<std::size_t>(withThread.profile().contacts), constants::kParallelMinConstraints);
-    EXPECT_EQ(twoThreads, oneThread);
+    runOnOneThreadAndTwo(testing::makeLoadedPlanks(8, 70), batched, 120);
 }
 
 } // namespace

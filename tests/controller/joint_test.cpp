@@ -2,6 +2,7 @@
 
 #include "controller/simulation.h"
 #include "controller/solver_under_test.h"
+#include "model/constants.h"
 #include "support/pendulum_theory.h"
 #include "support/world_builders.h"
 
@@ -21,6 +22,19 @@ using testing::makeEmptyWorld;
 
 constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
 constexpr Scalar kG = 9.81;
+
+/// A rod of `length` from the centre of mass of body `body` to the world point `pivot`.
+model::Joint rodToWorld(std::uint32_t body, Vec2 pivot, Scalar length)
+{
+    model::Joint rod;
+    rod.type = model::JointType::Rod;
+    rod.bodyA = model::BodyId{body};
+    rod.anchorA = Vec2::Zero();
+    rod.bodyB = std::nullopt;
+    rod.anchorB = pivot;
+    rod.length = length;
+    return rod;
+}
 
 /// Mean period of the x coordinate of body `index` from its upward zero crossings (linearly
 /// interpolated between steps), over `duration` seconds.
@@ -54,14 +68,7 @@ TEST(Pendulum, RodPendulumHasTheLargeAmplitudePeriod)
     const Scalar theta0 = kPi / 3;
     model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
     world.bodies.push_back(makeBall("bob", 1.0, 0.05, Vec2(length * std::sin(theta0), -length * std::cos(theta0))));
-    model::Joint rod;
-    rod.type = model::JointType::Rod;
-    rod.bodyA = model::BodyId{0};
-    rod.anchorA = Vec2::Zero();
-    rod.bodyB = std::nullopt;
-    rod.anchorB = Vec2::Zero();
-    rod.length = length;
-    world.joints.push_back(rod);
+    world.joints.push_back(rodToWorld(0, Vec2::Zero(), length));
 
     std::vector<Scalar> distances;
     const Scalar period = measurePeriod(world, 0, 12.0, 0.0, &distances);
@@ -102,6 +109,43 @@ TEST(Pendulum, PinnedRodIsAPhysicalPendulum)
     // mid-run hinges at the same point (the body's small pin error goes into its own anchor when
     // the scene is loaded again, not into the pivot).
     EXPECT_EQ(world.joints[0].worldAnchor, Vec2::Zero());
+}
+
+// A bob on a rod, held off the vertical by a frictionless wall it leans on: the joint and the
+// contact share the velocity passes. At rest the rod's tension T and the wall's push N balance the
+// weight, T·cos θ = m·g and N = T·sin θ, so N = m·g·tan θ, and the bob stays where the wall holds
+// it, with its rod at full length.
+TEST(Pendulum, BobLeaningOnAWallFeelsMgTanTheta)
+{
+    const Scalar length = 1.5;
+    const Scalar m = 1.0;
+    const Scalar half = 0.1;
+    const Scalar wallFace = 0.5;
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -kG));
+    // The wall is a fixed block below the pivot whose right face is at x = 0.5; the rod passes
+    // over it to the bob on its right.
+    world.bodies.push_back(testing::withMaterial(testing::makeGround("wall", 1.5, 2.5, Vec2(wallFace - 0.75, -0.5)), 0.0, 0.0));
+    const Scalar x = wallFace + half;
+    const Scalar y = -std::sqrt(length * length - x * x);
+    world.bodies.push_back(testing::withMaterial(makeBox("bob", m, 2 * half, 2 * half, Vec2(x, y)), 0.0, 0.0));
+    world.joints.push_back(rodToWorld(1, Vec2::Zero(), length));
+
+    Simulation simulation(settingsUnderTest());
+    for (int i = 0; i < 480; ++i)
+        simulation.step(world);
+    const Scalar h = world.settings.timeStep;
+    ASSERT_EQ(world.contacts.size(), 1u);
+    const model::ContactRecord& wall = world.contacts[0];
+    ASSERT_EQ(wall.pointCount, 2);
+    const Scalar push = (wall.normalImpulses[0] + wall.normalImpulses[1]) / h;
+    const Scalar tanTheta = x / -y;
+    EXPECT_NEAR(push, m * kG * tanTheta, 1e-6 * m * kG);
+    // The bob rests against the face (up to the solver's slop) and hangs at the rod's length.
+    const model::Body& bob = world.bodies[1];
+    EXPECT_NEAR(bob.state.position.x(), x, constants::kLinearSlop);
+    EXPECT_NEAR(bob.state.position.norm(), length, 1e-6);
+    EXPECT_NEAR(bob.state.angle, 0.0, 1e-9);
+    EXPECT_NEAR(bob.state.velocity.norm(), 0.0, 1e-9);
 }
 
 // A pin between two free bodies holds them together while the pair spins in zero gravity, and
