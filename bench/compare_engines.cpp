@@ -402,8 +402,11 @@ int main(int argc, char** argv)
               << " position iterations (controller::Simulation defaults), double; "
               << (options->noBatches ? std::string("one contact at a time (--no-batches)")
                                      : "worlds of " + std::to_string(impetusSolver.batchMinConstraints) +
-                                           " contacts or more in batches of four (" + controller::batchInstructions() +
-                                           " on this processor)")
+                                           " contacts or more in batches of four" +
+                                           (controller::fastestBatchOrder() == controller::BatchOrder::InPairs
+                                                ? ", two at a time"
+                                                : "") +
+                                           " (" + controller::batchInstructions() + " on this processor)")
               << ".\n"
               << "Box2D: " << kBox2dVelocityIterations << " velocity / " << kBox2dPositionIterations
               << " position iterations, float.\n"

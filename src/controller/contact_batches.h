@@ -11,6 +11,7 @@
 #include "model/scalar.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -18,6 +19,10 @@ namespace impetus::controller {
 
 /// Contacts per batch: four doubles fill one 256-bit register.
 inline constexpr int kBatchLanes = 4;
+
+/// Batches the passes may solve side by side (BatchOrder::InPairs): each colour fills a whole
+/// number of such pairs, so that two neighbouring batches never share a movable body.
+inline constexpr std::size_t kBatchPair = 2;
 
 /// kBatchLanes doubles, one per contact of a batch (GCC vector extension). The alignment is spelled
 /// out: GCC otherwise reports 16 bytes for an alias of a vector type, so containers would not
@@ -111,7 +116,16 @@ struct PositionBatch {
     std::array<std::uint32_t, kBatchLanes> writeB{};
 };
 
-/// The instructions the batch passes run with on this processor: "AVX2", or "SSE2" (the same bits).
+/// How the passes go through a colour's batches: one at a time, or two side by side, which a
+/// processor with AVX-512 (32 vector registers, room for two batches' state) runs faster as their
+/// two chains of dependent arithmetic overlap. Both give the same bits.
+enum class BatchOrder { OneByOne, InPairs };
+
+/// InPairs on a processor with AVX-512, else OneByOne. InPairs runs only where this gives it.
+BatchOrder fastestBatchOrder();
+
+/// The instructions the batch passes run with on this processor: "AVX-512" (two batches side by
+/// side), "AVX2" or "SSE2", all with the same bits.
 const char* batchInstructions();
 
 /// Applies every lane's accumulated impulses to its bodies (warm starting).
@@ -121,12 +135,13 @@ void warmStartBatches(std::span<ContactBatch> batches);
 /// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, as ContactSolver does for one
 /// contact: two points together by enumerating the complementarity problem's active sets where
 /// the block solve applies, else one point after the other.
-void solveBatches(std::span<ContactBatch> batches);
+void solveBatches(std::span<ContactBatch> batches, BatchOrder order = fastestBatchOrder());
 
 /// One non-linear Gauss–Seidel pass over the batches in order, as ContactSolver::solvePositions
 /// does for one contact: each point's separation is pushed towards −slop by moving the two bodies
 /// along the normal, in proportion to their inverse masses. Returns the deepest separation seen
 /// (≤ 0), m.
-Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses);
+Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses,
+                            BatchOrder order = fastestBatchOrder());
 
 } // namespace impetus::controller

@@ -1066,20 +1066,22 @@ void ContactSolver::colourGroup(std::span<const SolverBody> bodies, std::size_t 
         if (moveB)
             m_colourMasks[bodyB] |= bit;
     }
-    // Each colour fills whole batches, the last one padded: lay the lanes out colour by colour,
-    // keeping the group's order within a colour.
+    // Each colour fills whole pairs of batches (kBatchPair), the last one padded: lay the lanes
+    // out colour by colour, keeping the group's order within a colour.
+    constexpr std::size_t kColourStep = kBatchLanes * kBatchPair;
     std::array<std::size_t, kColours> firstLane{};
     std::size_t lanes = 0;
     for (std::size_t colour = 0; colour < kColours; ++colour) {
         firstLane[colour] = lanes;
-        lanes += (count[colour] + kBatchLanes - 1) / kBatchLanes * kBatchLanes;
+        lanes += (count[colour] + kColourStep - 1) / kColourStep * kColourStep;
     }
-    // A constraint that found every colour taken gets a batch of its own, after the others.
-    lanesOut.resize(lanes + count[kColours] * kBatchLanes, kNoConstraint);
+    // A constraint that found every colour taken gets a pair of batches of its own, after the
+    // others.
+    lanesOut.resize(lanes + count[kColours] * kColourStep, kNoConstraint);
     for (std::size_t k = 0; k < group.size(); ++k) {
         const std::size_t lane = colourOf[k] < kColours ? firstLane[colourOf[k]]++ : lanes;
         if (colourOf[k] == kColours)
-            lanes += kBatchLanes;
+            lanes += kColourStep;
         lanesOut[lane] = group[k];
         m_laneOf[group[k]] = static_cast<std::uint32_t>(lane);
     }
