@@ -1,6 +1,7 @@
 #include "controller/contact_batches.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <utility>
 
@@ -293,7 +294,8 @@ __attribute__((target_clones("avx2", "default"))) void solveBatchesOneByOne(std:
 
 __attribute__((target("arch=x86-64-v4,prefer-vector-width=256"))) void solveBatchesInPairs(std::span<ContactBatch> batches)
 {
-    for (std::size_t first = 0; first + 1 < batches.size(); first += kBatchPair) {
+    assert(batches.size() % kBatchPair == 0);
+    for (std::size_t first = 0; first < batches.size(); first += kBatchPair) {
         ContactBatch* const pair[kBatchPair] = {&batches[first], &batches[first + 1]};
         solveTogether<kBatchPair>(pair);
     }
@@ -396,7 +398,8 @@ __attribute__((target_clones("avx2", "default"))) void solvePositionBatchesOneBy
 __attribute__((target("arch=x86-64-v4,prefer-vector-width=256"))) void
 solvePositionBatchesInPairs(std::span<const PositionBatch> batches, std::span<BatchPose> poses, Lanes& deepest)
 {
-    for (std::size_t first = 0; first + 1 < batches.size(); first += kBatchPair) {
+    assert(batches.size() % kBatchPair == 0);
+    for (std::size_t first = 0; first < batches.size(); first += kBatchPair) {
         const PositionBatch* const pair[kBatchPair] = {&batches[first], &batches[first + 1]};
         correctTogether<kBatchPair>(pair, poses, deepest);
     }

@@ -74,7 +74,7 @@ struct ContactBatch {
     /// The bodies each lane reads its velocities from.
     std::array<const BatchBody*, kBatchLanes> bodyA{};
     std::array<const BatchBody*, kBatchLanes> bodyB{};
-    /// Where each lane writes them back: the body itself, or for a fixed body (whose velocity an
+    /// Where each lane writes them back: the same body, or for a fixed body (whose velocity an
     /// impulse never changes) a scratch body, so that batches on two threads never write to one
     /// shared ground.
     std::array<BatchBody*, kBatchLanes> writeA{};
@@ -134,13 +134,15 @@ void warmStartBatches(std::span<ContactBatch> batches);
 /// One sequential-impulse pass over the batches in order: per lane, Coulomb friction at each
 /// point (|jt| ≤ μ·jn of the last pass), then the normal impulses, as ContactSolver does for one
 /// contact: two points together by enumerating the complementarity problem's active sets where
-/// the block solve applies, else one point after the other.
+/// the block solve applies, else one point after the other. InPairs takes the batches two at a
+/// time, which must then be a whole number of pairs, no pair sharing a movable body (each colour
+/// laid out in whole pairs, as ContactSolver does).
 void solveBatches(std::span<ContactBatch> batches, BatchOrder order = fastestBatchOrder());
 
 /// One non-linear Gauss–Seidel pass over the batches in order, as ContactSolver::solvePositions
 /// does for one contact: each point's separation is pushed towards −slop by moving the two bodies
 /// along the normal, in proportion to their inverse masses. Returns the deepest separation seen
-/// (≤ 0), m.
+/// (≤ 0), m. InPairs asks of the batches what it asks in solveBatches.
 Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses,
                             BatchOrder order = fastestBatchOrder());
 

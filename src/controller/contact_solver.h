@@ -122,8 +122,8 @@ public:
     };
 
     /// Creates the constraints of a step of length h (s), orders them for solving (see
-    /// partition) and, in a batched step, lays them out in batches, which keep pointers into
-    /// `bodies` for the velocity passes to write through. `bodies` holds every solver body at the
+    /// partition) and, in a batched step, lays them out in batches, which keep pointers into this
+    /// solver's copies of the bodies (m_batchBodies). `bodies` holds every solver body at the
     /// start of the step, and `derivatives` their smooth-force derivatives, indexed alike (world
     /// bodies, then soft-grid ellipses: force_model.h, stateCount).
     void prepare(const model::World& world, std::span<const PairManifold> manifolds, std::span<SolverBody> bodies,
