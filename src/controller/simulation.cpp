@@ -411,17 +411,26 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
             sb.angularVelocity += m_endStates[i].angularVelocity - m_startStates[i].angularVelocity;
         }
     });
-    if (!world.softBodies.empty() && !m_jointSolver.empty())
-        syncSoftAggregates(world);
-    m_jointSolver.warmStart(m_bodies);
+    // Joints on soft bodies act on each grid's aggregate, contacts on its ellipses: each joint
+    // pass starts from the aggregate of where the contacts have left the ellipses, and hands what
+    // it did on to them before the contacts' next pass, so that the two see each other as joints
+    // and contacts on a rigid body do. (Handed on once at the end, the joints kept pulling at a
+    // resting body that the contacts had already stopped.)
+    const bool softJoints = !world.softBodies.empty() && !m_jointSolver.empty();
+    const auto onSoftAggregates = [&](auto&& jointWork) {
+        if (softJoints)
+            syncSoftAggregates(world);
+        jointWork();
+        if (softJoints)
+            shareJointMotion(world, false);
+    };
+    onSoftAggregates([&] { m_jointSolver.warmStart(m_bodies); });
     m_contactSolver.warmStart(m_bodies, h, !m_jointSolver.empty());
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
-        m_jointSolver.solveVelocities(m_bodies, h);
+        onSoftAggregates([&] { m_jointSolver.solveVelocities(m_bodies, h); });
         m_contactSolver.solveVelocities(m_bodies);
     }
     m_contactSolver.finishVelocities(m_bodies);
-    if (!world.softBodies.empty() && !m_jointSolver.empty())
-        shareJointMotion(world, false);
     m_profile.velocityMs += millisecondsSince(velocityStart);
     const Clock::time_point positionStart = Clock::now();
 
