@@ -331,8 +331,9 @@ template <std::size_t N>
     const Lanes slop = zero + constants::kLinearSlop;
     const Lanes factor = zero + constants::kPositionCorrectionFactor;
     const Lanes maxCorrection = zero + constants::kMaxPositionCorrection;
-    // Initialised from the loads, not zeroed first: with AVX-512 the compiler clears such arrays
-    // with 512-bit stores, which lower the processor's clock for the rest of the step.
+    // Initialised from the loads, not zeroed first: GCC clears such arrays with 512-bit stores,
+    // even at prefer-vector-width=256, and the AVX-512 passes keep to 256-bit instructions (512-bit
+    // ones lower the clock of some processors).
     std::array<LanePoses, N> a = loadEach<N>(batches, &PositionBatch::readA, poses, std::make_index_sequence<N>{});
     std::array<LanePoses, N> b = loadEach<N>(batches, &PositionBatch::readB, poses, std::make_index_sequence<N>{});
     for (std::size_t i = 0; i < 2; ++i) {

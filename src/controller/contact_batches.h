@@ -6,7 +6,6 @@
 /// of them at once. Each lane does exactly the arithmetic a lone contact would, so the result does
 /// not depend on the vector width the processor offers. See docs/physics.md, "Batches".
 
-#include "controller/solver_body.h"
 #include "model/constants.h"
 #include "model/scalar.h"
 
@@ -34,8 +33,7 @@ using LaneMask = std::int64_t
 
 /// A body as the batched velocity passes see it: its velocity and inverse mass properties, one
 /// cache line each. The passes work on copies of the solver bodies laid out by half (see
-/// ContactSolver): each thread's bodies lie together in memory, so that the processor fetching
-/// the lines next to the ones a thread reads never takes lines the other thread is writing.
+/// ContactSolver): each thread's bodies lie together in memory, apart from the other thread's.
 struct alignas(64) BatchBody {
     Vec2 velocity = Vec2::Zero(); ///< m/s
     Scalar angularVelocity = 0; ///< rad/s

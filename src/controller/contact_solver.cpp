@@ -971,12 +971,7 @@ void ContactSolver::assignSlots(std::span<const SolverBody> bodies)
 
 void ContactSolver::inSlotHalves(std::size_t count, const std::function<void(std::size_t, std::size_t)>& work)
 {
-    if (m_split && m_tasks) {
-        const std::size_t cut = std::min(m_firstHalfSlots, count);
-        m_tasks->run([&](int part) { part == 0 ? work(0, cut) : work(cut, count); });
-    } else {
-        work(0, count);
-    }
+    inTwoParts(m_split ? m_tasks : nullptr, std::min(m_firstHalfSlots, count), count, work);
 }
 
 void ContactSolver::copyVelocitiesIn(std::span<const SolverBody> bodies)

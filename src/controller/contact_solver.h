@@ -293,9 +293,10 @@ private:
     std::vector<PositionBatch> m_positionBatches; ///< the same lanes as m_batches, for the position passes
     /// A batched step's passes do not work on the solver bodies but on copies of them, in slots
     /// laid out by half (assignSlots). The halves of a split world are cut by position, so in the
-    /// bodies' own order the two threads' bodies alternate: the processor, which fetches lines
-    /// next to the ones a thread reads, then kept taking lines the other thread was writing, and
-    /// each thread's passes took 1.3 times as long side by side as alone.
+    /// bodies' own order the two threads' bodies alternate, and each thread's passes took 1.3 times
+    /// as long side by side as alone, though no cache line was written by both (most likely the
+    /// processor, fetching lines next to the ones a thread reads, took lines the other thread was
+    /// writing; docs/physics.md, "Two threads").
     std::vector<std::uint32_t> m_slotOf; ///< per body: its slot
     std::vector<std::uint32_t> m_bodyOfSlot; ///< per slot: its body
     std::size_t m_firstHalfSlots = 0; ///< slots of half 0's movable bodies (all, if not split)

@@ -85,8 +85,14 @@ void TaskPair::workerLoop()
 
 void inHalves(TaskPair* tasks, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work)
 {
+    inTwoParts(tasks, count / 2, count, work);
+}
+
+void inTwoParts(TaskPair* tasks, std::size_t cut, std::size_t count,
+                const std::function<void(std::size_t, std::size_t)>& work)
+{
     if (tasks)
-        tasks->run([&](int part) { part == 0 ? work(0, count / 2) : work(count / 2, count); });
+        tasks->run([&](int part) { part == 0 ? work(0, cut) : work(cut, count); });
     else
         work(0, count);
 }

@@ -48,4 +48,9 @@ private:
 /// gives the same bits.
 void inHalves(TaskPair* tasks, std::size_t count, const std::function<void(std::size_t, std::size_t)>& work);
 
+/// Runs work(0, cut) and work(cut, count) on two threads when `tasks` is given, or work(0, count)
+/// on this one: inHalves with the cut where the caller wants it.
+void inTwoParts(TaskPair* tasks, std::size_t cut, std::size_t count,
+                const std::function<void(std::size_t, std::size_t)>& work);
+
 } // namespace impetus::controller
