@@ -4,7 +4,7 @@
 // twice) or a lot (rain falling: every box leaves where it was).
 // Run: build/bench/bench/impetus-bench-broad-phase
 
-#include "controller/broad_phase.h"
+#include "controller/collision/broad_phase.h"
 #include "model/example_scenes.h"
 
 #include <benchmark/benchmark.h>

@@ -6,7 +6,7 @@
 #include "peer_engines.h"
 #include "pose_quality.h"
 
-#include "controller/contact_batches.h"
+#include "controller/dynamics/contact_batches.h"
 #include "controller/simulation.h"
 #include "model/example_scenes.h"
 

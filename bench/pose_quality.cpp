@@ -1,6 +1,6 @@
 #include "pose_quality.h"
 
-#include "controller/broad_phase.h"
+#include "controller/collision/broad_phase.h"
 
 #include <algorithm>
 #include <limits>

@@ -4,7 +4,7 @@
 // Run: build/bench/bench/impetus-bench-soft [--density N] [--integrator NAME] [--seconds S] [--one-thread] [--no-batches]
 
 #include "controller/simulation.h"
-#include "controller/soft_body_builder.h"
+#include "controller/soft/soft_body_builder.h"
 #include "model/world.h"
 
 #include <algorithm>

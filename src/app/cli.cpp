@@ -2,9 +2,9 @@
 
 #include "controller/diagnostics.h"
 #include "controller/simulation.h"
-#include "controller/soft_body_builder.h"
-#include "controller/soft_comparison.h"
-#include "controller/soft_stability.h"
+#include "controller/soft/soft_body_builder.h"
+#include "controller/soft/soft_comparison.h"
+#include "controller/soft/soft_stability.h"
 #include "model/scene_io.h"
 
 #include <nlohmann/json.hpp>

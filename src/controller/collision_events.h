@@ -3,7 +3,7 @@
 /// What the contacts of a step mean to a student: which bodies are colliding (drawn red), which
 /// contacts began (counted), and a log of each new collision.
 
-#include "controller/contact_solver.h"
+#include "controller/dynamics/contact_solver.h"
 #include "controller/task_pair.h"
 #include "model/world.h"
 

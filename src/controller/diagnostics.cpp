@@ -1,7 +1,7 @@
 #include "controller/diagnostics.h"
 
-#include "controller/force_model.h"
-#include "controller/soft_body_builder.h"
+#include "controller/integration/force_model.h"
+#include "controller/soft/soft_body_builder.h"
 
 #include <cmath>
 #include <vector>

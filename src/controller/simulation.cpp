@@ -1,7 +1,7 @@
 #include "controller/simulation.h"
 
-#include "controller/narrow_phase.h"
-#include "controller/soft_body_builder.h"
+#include "controller/collision/narrow_phase.h"
+#include "controller/soft/soft_body_builder.h"
 
 #include <algorithm>
 #include <array>

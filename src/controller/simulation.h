@@ -2,13 +2,13 @@
 /// \file simulation.h
 /// The fixed-step driver. Simulation::step reads top to bottom as the phases it runs.
 
-#include "controller/broad_phase.h"
+#include "controller/collision/broad_phase.h"
 #include "controller/collision_events.h"
-#include "controller/colliders.h"
-#include "controller/contact_solver.h"
-#include "controller/integrator.h"
-#include "controller/joint_solver.h"
-#include "controller/soft_stability.h"
+#include "controller/collision/colliders.h"
+#include "controller/dynamics/contact_solver.h"
+#include "controller/integration/integrator.h"
+#include "controller/dynamics/joint_solver.h"
+#include "controller/soft/soft_stability.h"
 #include "controller/task_pair.h"
 #include "model/constants.h"
 #include "model/world.h"

@@ -1,6 +1,6 @@
 #include "view/canvas_view.h"
 
-#include "controller/soft_body_shape.h"
+#include "controller/soft/soft_body_shape.h"
 
 #include "view/body_item.h"
 #include "view/soft_detail_item.h"

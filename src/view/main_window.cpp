@@ -1,8 +1,8 @@
 #include "view/main_window.h"
 
 #include "controller/diagnostics.h"
-#include "controller/soft_stability.h"
-#include "controller/soft_comparison.h"
+#include "controller/soft/soft_stability.h"
+#include "controller/soft/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
 #include "view/property_pane.h"

@@ -3,7 +3,7 @@
 /// The main window: the canvas, the tools, the run controls, the menus, the readouts and the
 /// attributes dock.
 
-#include "controller/soft_comparison.h"
+#include "controller/soft/soft_comparison.h"
 #include "model/world.h"
 #include "view/tools/tool.h"
 

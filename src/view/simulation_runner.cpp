@@ -1,7 +1,7 @@
 #include "view/simulation_runner.h"
 
 #include "controller/diagnostics.h"
-#include "controller/soft_body_builder.h"
+#include "controller/soft/soft_body_builder.h"
 #include "view/view_constants.h"
 
 #include <algorithm>

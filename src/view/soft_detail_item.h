@@ -3,7 +3,7 @@
 /// What a soft body is made of, drawn over it on request: its ellipses and its springs coloured by
 /// strain (docs/app.md, "Soft bodies").
 
-#include "controller/soft_body_shape.h"
+#include "controller/soft/soft_body_shape.h"
 
 #include <QGraphicsItem>
 #include <QPainterPath>

@@ -4,7 +4,7 @@
 // changed bodies and flags, changed counts and NaNs, every call still matches the reference, and
 // the calls that may reuse the fat pairs do.
 
-#include "controller/broad_phase.h"
+#include "controller/collision/broad_phase.h"
 #include "model/constants.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The batch passes give the same bits whether they go through a colour's batches one at a time or
 // two side by side (contact_batches.h, BatchOrder).
 
-#include "controller/contact_batches.h"
+#include "controller/dynamics/contact_batches.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Contacts against the textbook: 1D collisions, bouncing, friction on an incline, rolling,
 // Newton's cradle, tunnelling, and the conservation laws of free bodies in zero gravity.
 
-#include "controller/contact_solver.h"
+#include "controller/dynamics/contact_solver.h"
 #include "controller/diagnostics.h"
 #include "controller/simulation.h"
 #include "controller/solver_under_test.h"

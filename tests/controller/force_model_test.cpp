@@ -2,7 +2,7 @@
 // conservation laws that internal forces must respect.
 
 #include "controller/diagnostics.h"
-#include "controller/force_model.h"
+#include "controller/integration/force_model.h"
 #include "controller/simulation.h"
 #include "support/world_builders.h"
 

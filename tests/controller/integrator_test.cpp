@@ -2,7 +2,7 @@
 // and energy behaviour of each method) and a two-body spring system (coupled integration).
 
 #include "controller/diagnostics.h"
-#include "controller/integrator.h"
+#include "controller/integration/integrator.h"
 #include "controller/simulation.h"
 #include "support/world_builders.h"
 

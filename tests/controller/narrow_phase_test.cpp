@@ -1,7 +1,7 @@
 // Narrow phase: polygon–polygon (SAT and clipping), circles, and ellipses (GJK/EPA), checked
 // against hand-computed contacts and, for ellipses, against brute-force geometry.
 
-#include "controller/narrow_phase.h"
+#include "controller/collision/narrow_phase.h"
 
 #include "model/polygon.h"
 

@@ -1,7 +1,7 @@
 // Soft bodies in the window: drawn as their deformed outline, their ellipses and strain on
 // request (View menu), and the density and substeps shown in the status bar.
 
-#include "controller/soft_body_shape.h"
+#include "controller/soft/soft_body_shape.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"

@@ -14,7 +14,7 @@
 // so a box resting on a box keeps both ids from step to step, and a point that slides off the end
 // of the reference face (a vertex turning into a clip point) gets a new one.
 
-#include "controller/narrow_phase.h"
+#include "controller/collision/narrow_phase.h"
 
 #include "model/constants.h"
 

@@ -1,6 +1,6 @@
 // Circle–circle and polygon–circle contact in closed form: one point each, exact distances.
 
-#include "controller/narrow_phase.h"
+#include "controller/collision/narrow_phase.h"
 
 #include <cstddef>
 

@@ -1,4 +1,4 @@
-#include "controller/broad_phase.h"
+#include "controller/collision/broad_phase.h"
 
 #include "model/constants.h"
 

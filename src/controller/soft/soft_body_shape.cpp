@@ -1,4 +1,4 @@
-#include "controller/soft_body_shape.h"
+#include "controller/soft/soft_body_shape.h"
 
 #include "model/constants.h"
 

@@ -1,4 +1,4 @@
-#include "controller/integrator.h"
+#include "controller/integration/integrator.h"
 
 namespace impetus::controller {
 

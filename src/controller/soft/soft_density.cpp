@@ -1,4 +1,4 @@
-#include "controller/soft_density.h"
+#include "controller/soft/soft_density.h"
 
 #include "controller/simulation.h"
 #include "model/constants.h"

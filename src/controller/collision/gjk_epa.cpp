@@ -8,7 +8,7 @@
 // positive when apart (the distance) and negative when overlapping (minus the penetration depth);
 // GJK and EPA find that maximum from outside and inside D respectively.
 
-#include "controller/narrow_phase.h"
+#include "controller/collision/narrow_phase.h"
 
 #include "model/constants.h"
 

@@ -8,7 +8,7 @@
 ///  - Rod: the anchors keep their distance, C = |p_B − p_A| − L = 0 (one equation, pushes or pulls).
 /// A joint to the world (bodyB absent) uses a fixed point for B.
 
-#include "controller/contact_solver.h"
+#include "controller/dynamics/contact_solver.h"
 #include "model/world.h"
 
 #include <Eigen/Core>

@@ -13,10 +13,10 @@
 /// Penetration is removed at the position level (non-linear Gauss–Seidel), which moves bodies and
 /// never changes a velocity, so it cannot add kinetic energy. See docs/physics.md, "Contacts".
 
-#include "controller/collision_types.h"
-#include "controller/contact_batches.h"
-#include "controller/force_model.h"
-#include "controller/solver_body.h"
+#include "controller/collision/collision_types.h"
+#include "controller/dynamics/contact_batches.h"
+#include "controller/integration/force_model.h"
+#include "controller/dynamics/solver_body.h"
 #include "controller/task_pair.h"
 #include "model/scalar.h"
 #include "model/world.h"

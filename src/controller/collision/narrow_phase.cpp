@@ -1,7 +1,7 @@
 // The narrow-phase dispatcher: each pair of shape kinds goes to the algorithm that is exact and
 // cheapest for it. The algorithms live in sat_collision.cpp, circle_collision.cpp and gjk_epa.cpp.
 
-#include "controller/narrow_phase.h"
+#include "controller/collision/narrow_phase.h"
 
 #include <cmath>
 

@@ -2,8 +2,8 @@
 /// \file colliders.h
 /// The world-space collision shapes of every body for one step, in flat arrays.
 
-#include "controller/collision_types.h"
-#include "controller/narrow_phase.h"
+#include "controller/collision/collision_types.h"
+#include "controller/collision/narrow_phase.h"
 #include "controller/task_pair.h"
 #include "controller/transform.h"
 #include "model/scalar.h"

@@ -1,6 +1,6 @@
-#include "controller/soft_body_builder.h"
+#include "controller/soft/soft_body_builder.h"
 
-#include "controller/soft_density.h"
+#include "controller/soft/soft_density.h"
 #include "model/constants.h"
 
 #include <algorithm>

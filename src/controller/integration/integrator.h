@@ -3,7 +3,7 @@
 /// Time integrators over the whole world state: every body's position, angle, velocity and
 /// angular velocity advance together, so bodies joined by springs integrate as one coupled system.
 
-#include "controller/force_model.h"
+#include "controller/integration/force_model.h"
 #include "model/scalar.h"
 #include "model/world.h"
 

@@ -4,7 +4,7 @@
 /// Axis Theorem with reference-face clipping, circle pairs in closed form, and any pair with an
 /// ellipse by GJK (distance when apart) and EPA (penetration when overlapping).
 
-#include "controller/collision_types.h"
+#include "controller/collision/collision_types.h"
 #include "model/scalar.h"
 
 #include <span>

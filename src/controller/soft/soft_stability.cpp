@@ -1,4 +1,4 @@
-#include "controller/soft_stability.h"
+#include "controller/soft/soft_stability.h"
 
 #include "model/constants.h"
 

@@ -1,6 +1,6 @@
-#include "controller/force_model.h"
+#include "controller/integration/force_model.h"
 
-#include "controller/soft_body_builder.h"
+#include "controller/soft/soft_body_builder.h"
 #include "model/constants.h"
 
 #include <algorithm>

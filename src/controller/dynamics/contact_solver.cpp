@@ -1,4 +1,4 @@
-#include "controller/contact_solver.h"
+#include "controller/dynamics/contact_solver.h"
 
 #include "controller/transform.h"
 #include "model/constants.h"

@@ -1,4 +1,4 @@
-#include "controller/colliders.h"
+#include "controller/collision/colliders.h"
 
 #include "controller/transform.h"
 

@@ -2,7 +2,7 @@
 /// \file broad_phase.h
 /// Candidate pairs from bounding boxes, by sort and sweep.
 
-#include "controller/collision_types.h"
+#include "controller/collision/collision_types.h"
 
 #include <cstdint>
 #include <span>

@@ -1,4 +1,4 @@
-#include "controller/contact_batches.h"
+#include "controller/dynamics/contact_batches.h"
 
 #include <algorithm>
 #include <cassert>

@@ -1,7 +1,7 @@
-#include "controller/soft_comparison.h"
+#include "controller/soft/soft_comparison.h"
 
 #include "controller/simulation.h"
-#include "controller/soft_body_builder.h"
+#include "controller/soft/soft_body_builder.h"
 
 #include <algorithm>
 #include <cmath>

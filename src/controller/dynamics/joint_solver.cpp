@@ -1,4 +1,4 @@
-#include "controller/joint_solver.h"
+#include "controller/dynamics/joint_solver.h"
 
 #include "model/constants.h"
 
