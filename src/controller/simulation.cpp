@@ -21,6 +21,19 @@ double millisecondsSince(Clock::time_point start)
 
 } // namespace
 
+int solverSubsteps(Scalar h, Scalar maxSubstep)
+{
+    if (!(h > 0) || !(maxSubstep > 0))
+        return 1;
+    // A relative tolerance far above rounding (1e-16) and far below any step a user would type:
+    // h = 1/60 is four substeps of 1/240 s, not five.
+    constexpr Scalar kRoundingTolerance = 1e-9;
+    const Scalar ratio = h / maxSubstep * (1 - kRoundingTolerance);
+    if (!(ratio < constants::kMaxSolverSubsteps))
+        return constants::kMaxSolverSubsteps;
+    return std::max(1, static_cast<int>(std::ceil(ratio)));
+}
+
 Simulation::Simulation(SolverSettings settings)
     : m_settings(settings)
     , m_euler(makeIntegrator(model::IntegratorKind::Euler))
@@ -372,10 +385,8 @@ void Simulation::shareJointMotion(const model::World& world, bool positions)
     }
 }
 
-void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
+void Simulation::startAndCollide(const model::World& world, Scalar h)
 {
-    const std::size_t total = stateCount(world);
-
     // Phase 0: the start of the step, as the solvers see it.
     gatherStates(world, m_startStates, bodyTasks(world));
     setUpSolverBodies(world);
@@ -383,6 +394,33 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime)
 
     // Phase 1: collision detection at the start-of-step poses, with speculative margins.
     collide(world, h);
+}
+
+int Simulation::substepsFor(model::World& world, bool& collided)
+{
+    collided = false;
+    const Scalar h = world.settings.timeStep;
+    const int split = solverSubsteps(h, m_settings.maxSubstep);
+    if (split == 1 || !world.joints.empty() || !world.softBodies.empty())
+        return std::max(m_stability.substeps, split);
+    // Whether this step has contacts: found with the whole step's margins, which cover everything
+    // that can touch within it. A world in free flight (a projectile, an oscillator) is then
+    // integrated over the step the user chose, so that a lesson on integrators sees their error
+    // at that step; a world with contacts is split, and finds its contacts again per substep.
+    startAndCollide(world, h);
+    const bool contacts = std::any_of(m_manifolds.begin(), m_manifolds.end(),
+                                      [](const ContactSolver::PairManifold& pm) { return pm.manifold.count > 0; });
+    collided = !contacts;
+    return contacts ? split : 1;
+}
+
+void Simulation::substep(model::World& world, Scalar h, Scalar endTime, bool collided)
+{
+    const std::size_t total = stateCount(world);
+
+    // Phases 0 and 1: the start of the step and its collisions (startAndCollide).
+    if (!collided)
+        startAndCollide(world, h);
 
     // Phase 2: impacts, on the velocities from before this step's forces.
     const Clock::time_point solveStart = Clock::now();
@@ -482,12 +520,14 @@ void Simulation::step(model::World& world)
     m_events.clear();
 
     const Scalar h = world.settings.timeStep;
-    const int substeps = m_stability.substeps;
+    bool collided = false;
+    const int substeps = substepsFor(world, collided);
+    m_profile.substeps = substeps;
     const Scalar startTime = world.time;
     for (int k = 1; k <= substeps; ++k) {
         // The last substep lands exactly on t + h, whatever the rounding of h/substeps.
         const Scalar endTime = k == substeps ? startTime + h : startTime + k * (h / substeps);
-        substep(world, h / substeps, endTime);
+        substep(world, h / substeps, endTime, collided);
     }
     ++world.stepCount;
     for (model::Joint& joint : world.joints) {

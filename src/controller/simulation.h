@@ -34,6 +34,7 @@ struct StepProfile {
     double totalMs = 0; ///< the whole step
     int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
     int impacts = 0; ///< impacts resolved
+    int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
 };
 
 /// Iteration counts of the constraint solvers.
@@ -46,11 +47,21 @@ struct SolverSettings {
     /// A step with at least this many contact constraints runs its velocity passes in batches of
     /// contacts of one colour (contact_batches.h). Tests set 0 to batch every world.
     std::size_t batchMinConstraints = constants::kBatchMinConstraints;
+    /// The longest substep the solvers take, s: a longer world step is split into equal substeps
+    /// (solverSubsteps). Tests set it to the world step to see one unsplit step.
+    Scalar maxSubstep = constants::kMaxSolverStep;
 };
 
+/// The equal substeps a step of h seconds is split into so that none is longer than maxSubstep:
+/// ⌈h / maxSubstep⌉, 1 for h ≤ maxSubstep (a step a hair longer by rounding, such as 4 × (1/240)
+/// against 1/60, is not split again), and at most constants::kMaxSolverSubsteps.
+int solverSubsteps(Scalar h, Scalar maxSubstep);
+
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built
-/// into grids on the first step that needs them (prepareSoftBodies), and a step is split into
-/// equal substeps when a grid is too stiff for the integrator at the world's step (softStability).
+/// into grids on the first step that needs them (prepareSoftBodies). A step is split into equal
+/// substeps when it is longer than the solver's longest step (solverSubsteps) and has contacts or
+/// joints to solve, or when a grid is too stiff for the integrator at the world's step
+/// (softStability), whichever needs more.
 /// Each substep runs every phase below. Holds only scratch state (buffers, the broad phase's
 /// sort order), so one Simulation can step any world; the world itself carries everything
 /// physical, including the contact impulses that warm-start the next step.
@@ -76,8 +87,19 @@ private:
     enum class Entry : std::uint8_t { Rigid, Fixed, SoftOwner, Ellipse };
 
     Integrator& integratorFor(model::IntegratorKind kind);
-    /// One pass of every phase over h seconds, ending at simulated time endTime.
-    void substep(model::World& world, Scalar h, Scalar endTime);
+    /// One pass of every phase over h seconds, ending at simulated time endTime. `collided`: the
+    /// start of the step has already been set up and its collisions found for this h
+    /// (startAndCollide), so phases 0 and 1 are skipped.
+    void substep(model::World& world, Scalar h, Scalar endTime, bool collided = false);
+    /// Phases 0 and 1 of a step of h seconds: the start states, the solver bodies, the smooth
+    /// forces' derivatives, and the contacts found with speculative margins for h.
+    void startAndCollide(const model::World& world, Scalar h);
+    /// The substeps this step of `world` takes (docs/physics.md, "Time step and substeps"): what
+    /// its soft grids need, and for a step longer than the solver's longest, solverSubsteps
+    /// when the step has contacts or joints to solve. A world with neither runs its integrator
+    /// over the whole step, as the user chose it; `collided` tells that this function found so by
+    /// running startAndCollide for the whole step, which the step then uses.
+    int substepsFor(model::World& world, bool& collided);
     void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).

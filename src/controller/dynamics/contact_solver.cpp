@@ -120,6 +120,13 @@ Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p,
     // passing it on impact by impact through a landing pile costs thousands of impacts.
     if (p.carriesLoad && (c.restitution == 0 || (!a.hadImpact && !b.hadImpact)))
         return result;
+    // Two plastic surfaces already touching are left to the contact forces too, whatever their
+    // approach: the forces stop the approach exactly as a plastic impact would, with friction
+    // within μ times the same normal impulse. Struck one at a time instead, a pile whose contacts
+    // lose and regain their load (a tall stack at a long step) passed each blow on impact by
+    // impact: 10,000 impacts and 75 ms in one step of a 50-row pyramid at 1/60 s.
+    if (c.restitution == 0 && p.separation <= constants::kTouchDistance)
+        return result;
     const Scalar threshold = p.carriesLoad ? constants::kRestingImpactThreshold : constants::kRestitutionThreshold;
     const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
     if (p.separation <= constants::kTouchDistance) {
