@@ -1,0 +1,117 @@
+// ContactSolver, phase 4: position correction by non-linear Gauss–Seidel, which moves bodies and
+// never changes a velocity.
+
+#include "controller/dynamics/contact_solver.h"
+#include "controller/dynamics/contact_solver_detail.h"
+
+#include "controller/transform.h"
+#include "model/constants.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impetus::controller {
+
+namespace {
+
+/// One non-linear Gauss–Seidel update of one constraint's positions. `rotations` holds every
+/// body's cos and sin of its current angle, kept up to date here when a body turns. Returns the
+/// deepest separation it saw (≤ 0), m.
+Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies, std::span<Vec2> rotations)
+{
+    Scalar deepest = 0;
+    SolverBody& a = bodies[c.bodyA];
+    SolverBody& b = bodies[c.bodyB];
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+        // Current separation of the two surface points along the normal, which turns with A.
+        const Vec2& rotationA = rotations[c.bodyA];
+        const Vec2& rotationB = rotations[c.bodyB];
+        const Transform frameA{a.position, rotationA.x(), rotationA.y()};
+        const Transform frameB{b.position, rotationB.x(), rotationB.y()};
+        const Vec2 n = frameA.rotate(c.localNormalA);
+        const Vec2 pointA = frameA.apply(p.localAnchorA);
+        const Vec2 pointB = frameB.apply(p.localAnchorB);
+        const Scalar separation = (pointB - pointA).dot(n);
+        deepest = std::min(deepest, separation);
+
+        const Scalar correction =
+            std::clamp(constants::kPositionCorrectionFactor * (separation + constants::kLinearSlop),
+                       -constants::kMaxPositionCorrection, 0.0);
+        if (correction == 0)
+            continue;
+        const Vec2 mid = 0.5 * (pointA + pointB);
+        const Vec2 rA = mid - a.position;
+        const Vec2 rB = mid - b.position;
+        const Scalar mass = effectiveMass(a, b, rA, rB, n);
+        applyPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
+        // A resting point within the slop moves nothing: the sine and cosine are computed again
+        // only for a body that turned, not at every look.
+        if (movable(a))
+            rotations[c.bodyA] = Vec2(std::cos(a.angle), std::sin(a.angle));
+        if (movable(b))
+            rotations[c.bodyB] = Vec2(std::cos(b.angle), std::sin(b.angle));
+    }
+    return deepest;
+}
+
+} // namespace
+
+bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere)
+{
+    if (m_batched)
+        return solvePositionsInBatches(bodies, turnedElsewhere);
+    // Each pass keeps the sines and cosines of the bodies it turns up to date, so they need
+    // computing afresh only when something else has turned bodies since: a large world's thousands
+    // of them cost as much as a pass.
+    if (turnedElsewhere)
+        computeRotations(bodies, m_split);
+    std::array<Scalar, 3> deepest{};
+    // Each group keeps its deepest in a local and writes it once: the two threads writing to
+    // neighbouring elements on every constraint would pass that cache line back and forth.
+    forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
+        Scalar groupDeepest = 0;
+        for (const std::uint32_t ci : group)
+            groupDeepest = std::min(groupDeepest, solvePositionConstraint(m_constraints[ci], bodies, m_rotations));
+        deepest[static_cast<std::size_t>(index)] = groupDeepest;
+    });
+    // Allow a little more than the slop before calling it solved, as the iterations converge
+    // towards −slop from either side.
+    return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
+}
+
+bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool turnedElsewhere)
+{
+    // The poses, with their cosines and sines, are taken from the bodies only when something else
+    // may have moved them; the passes keep both up to date, and hand the poses back after each
+    // pass. Each half of a split world does its own bodies.
+    // They are kept by slot, as the velocities are (assignSlots).
+    if (turnedElsewhere) {
+        inSlotHalves(m_bodyOfSlot.size(), [&](std::size_t begin, std::size_t end) {
+            for (std::size_t slot = begin; slot < end; ++slot) {
+                const SolverBody& body = bodies[m_bodyOfSlot[slot]];
+                m_poses[slot] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
+                                          std::sin(body.angle)};
+            }
+        });
+    }
+    std::array<Scalar, 3> deepest{};
+    runGroups([&](int g) {
+        const auto ug = static_cast<std::size_t>(g);
+        deepest[ug] = solvePositionBatches(std::span<const PositionBatch>(m_positionBatches)
+                                               .subspan(m_batchGroupStart[ug], m_batchGroupStart[ug + 1] - m_batchGroupStart[ug]),
+                                           m_poses);
+    });
+    inSlotHalves(m_movableSlots, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t slot = begin; slot < end; ++slot) {
+            SolverBody& body = bodies[m_bodyOfSlot[slot]];
+            if (!movable(body))
+                continue;
+            body.position = Vec2(m_poses[slot].x, m_poses[slot].y);
+            body.angle = m_poses[slot].angle;
+        }
+    });
+    return std::min({deepest[0], deepest[1], deepest[2]}) >= -3 * constants::kLinearSlop;
+}
+
+} // namespace impetus::controller

@@ -1,0 +1,31 @@
+#pragma once
+/// \file contact_solver_detail.h
+/// What the contact solver's phases (contact_prepare, contact_impacts, contact_velocities,
+/// contact_positions, contact_order) share inside the engine. Not for use outside
+/// controller/dynamics.
+
+#include "controller/dynamics/contact_solver.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <span>
+
+namespace impetus::controller::detail {
+
+/// The 2×2 block solve is used only when K's condition number stays below this: two contact
+/// points that (nearly) coincide make K singular, and then the points are solved one at a time.
+inline constexpr Scalar kMaxBlockConditionNumber = 1000.0;
+
+/// The tangent of a contact: the normal turned clockwise, so (n, t) is a right-handed pair.
+inline Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
+
+/// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when
+/// none is (contact_impacts.cpp).
+std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h);
+
+/// The effective-mass matrix K of a contact's normal impulses, 1/kg: for two points the 2×2 matrix
+/// of the block solve; for one, K₁₁ = 1/(its normal mass) and the rest 0.
+Eigen::Matrix2d normalK(const ContactConstraint& c, const SolverBody& a, const SolverBody& b);
+
+} // namespace impetus::controller::detail
