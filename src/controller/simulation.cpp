@@ -401,7 +401,10 @@ int Simulation::substepsFor(model::World& world, bool& collided)
     collided = false;
     const Scalar h = world.settings.timeStep;
     const int split = solverSubsteps(h, m_settings.maxSubstep);
-    if (split == 1 || !world.joints.empty() || !world.softBodies.empty())
+    // Joints always need the split, and so does a world that ended its last step with contacts
+    // (a pile, a resting box): it is split without first looking for this step's contacts, which
+    // would cost a collision pass that the substeps then do again.
+    if (split == 1 || !world.joints.empty() || !world.softBodies.empty() || !world.contacts.empty())
         return std::max(m_stability.substeps, split);
     // Whether this step has contacts: found with the whole step's margins, which cover everything
     // that can touch within it. A world in free flight (a projectile, an oscillator) is then

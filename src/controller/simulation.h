@@ -96,7 +96,7 @@ private:
     void startAndCollide(const model::World& world, Scalar h);
     /// The substeps this step of `world` takes (docs/physics.md, "Time step and substeps"): what
     /// its soft grids need, and for a step longer than the solver's longest, solverSubsteps
-    /// when the step has contacts or joints to solve. A world with neither runs its integrator
+    /// when the step has contacts or joints to solve (or the last step ended with contacts). A world with neither runs its integrator
     /// over the whole step, as the user chose it; `collided` tells that this function found so by
     /// running startAndCollide for the whole step, which the step then uses.
     int substepsFor(model::World& world, bool& collided);
