@@ -5,6 +5,7 @@
 #include "controller/soft/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
+#include "view/pace_indicator.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
@@ -80,6 +81,7 @@ MainWindow::MainWindow(QWidget* parent)
     SimulationRunner& runner = m_document->runner();
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
     connect(&runner, &SimulationRunner::diverged, this, &MainWindow::showDivergence);
+    connect(&runner, &SimulationRunner::computingStepChanged, this, &MainWindow::updateStepAction);
     connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateSoftStatus);
@@ -409,8 +411,9 @@ void MainWindow::createStatusBar()
     m_softLabel->setObjectName(QStringLiteral("softStatus"));
     m_softLabel->setAccessibleName(tr("Soft bodies"));
     m_softLabel->hide();
-    for (QLabel* label :
-         {m_softLabel, m_timeLabel, m_energyPartsLabel, m_energyLabel, m_momentumLabel, m_collisionLabel}) {
+    m_paceIndicator = new PaceIndicator(m_document->runner(), this);
+    for (QLabel* label : {static_cast<QLabel*>(m_paceIndicator), m_softLabel, m_timeLabel, m_energyPartsLabel,
+                          m_energyLabel, m_momentumLabel, m_collisionLabel}) {
         label->setContentsMargins(kStatusLabelPaddingPx, 0, kStatusLabelPaddingPx, 0);
         statusBar()->addPermanentWidget(label);
     }
@@ -648,7 +651,14 @@ void MainWindow::onRunningChanged(bool running)
     m_playAction->setText(running ? tr("Pause") : tr("Play"));
     m_playAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     m_playAction->setToolTip(running ? tr("Pause the simulation (Space)") : tr("Run the simulation (Space)"));
-    m_stepAction->setEnabled(!running);
+    updateStepAction();
+}
+
+void MainWindow::updateStepAction()
+{
+    // Step waits for the step it asked for: presses while it is computed would pile up steps.
+    const SimulationRunner& runner = m_document->runner();
+    m_stepAction->setEnabled(!runner.isRunning() && !runner.isComputingStep());
 }
 
 void MainWindow::updateStatus()

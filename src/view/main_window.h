@@ -25,6 +25,7 @@ class QMessageBox;
 namespace impetus::view {
 
 class CanvasView;
+class PaceIndicator;
 class PropertyPane;
 class SceneDocument;
 class SimulationRunner;
@@ -33,10 +34,12 @@ class SimulationRunner;
 /// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed). The
 /// one-key shortcuts (those, Del, G, Home and the tool letters) act while the canvas or a tool bar
 /// has the focus, so that the attribute pane keeps its keys; the Ctrl shortcuts act anywhere. The
-/// status bar shows the simulated time, the energies, the momentum and the collision count. The
-/// attributes dock (object name "attributesDock") sits on the right. Menus: File (New, Open, Open
-/// Recent, Save, Save As, Quit), Edit (Undo, Redo, Delete, Select All), View, Tools, Simulation
-/// and Examples. The title is "<scene name>[*] — Impetus", with the marker while modified.
+/// status bar shows the simulated time, the energies, the momentum and the collision count, and,
+/// while the simulation runs slower than real time, a PaceIndicator (object name "paceStatus")
+/// that says how much slower and why. Step is disabled while a step is computed in the
+/// background. The attributes dock (object name "attributesDock") sits on the right. Menus: File
+/// (New, Open, Open Recent, Save, Save As, Quit), Edit (Undo, Redo, Delete, Select All), View,
+/// Tools, Simulation and Examples. The title is "<scene name>[*] — Impetus", with the marker while modified.
 ///
 /// Before discarding edits that are not saved (New, Open, an example, closing) the window asks
 /// with a QMessageBox whose object name is "unsavedChangesBox". The dock layout and the window
@@ -157,6 +160,8 @@ private:
     void addRecentFile(const QString& path);
     void fillRecentMenu();
     void onRunningChanged(bool running);
+    /// Step is enabled while paused and no Step is being computed.
+    void updateStepAction();
     void updateStatus();
     void updateTitle();
     void showProblems(const QString& path, const QStringList& problems);
@@ -194,6 +199,7 @@ private:
     QLabel* m_momentumLabel = nullptr;
     QLabel* m_collisionLabel = nullptr;
     QLabel* m_softLabel = nullptr; ///< soft bodies' density and substeps; hidden without any
+    PaceIndicator* m_paceIndicator = nullptr; ///< "Running at 0.2× real time"; hidden while keeping up
     QAction* m_softEllipsesAction = nullptr;
     QAction* m_compareRigidAction = nullptr;
     QAction* m_softStrainAction = nullptr;

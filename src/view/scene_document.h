@@ -115,8 +115,9 @@ public:
     /// A number no earlier gesture had: a tool takes one when a drag begins.
     int newGesture() { return ++m_lastGesture; }
 
-    /// Pauses and takes one fixed step, as a command ("Step") whose undo puts back the world
-    /// before it. Consecutive steps merge into one command.
+    /// Pauses and takes one fixed step (SimulationRunner::stepOnce(): a slow one is shown when it
+    /// ends), as a command ("Step") whose undo puts back the world before it and drops a step
+    /// still being computed. Consecutive steps merge into one command.
     void stepOnce();
 
     /// Puts back the world as it was at the last Play, paused, as one command ("Reset"). Does

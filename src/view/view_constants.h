@@ -6,25 +6,47 @@
 
 #include <QColor>
 
+#include <cstddef>
 #include <cstdint>
 
 namespace impetus::view::constants {
 
 /// Interval of the run timer, ms. 16 ms is about one 60 Hz display frame; the runner measures the
-/// real elapsed time anyway, so a late tick only means more fixed steps in that tick.
+/// real elapsed time anyway, so a late tick only means more fixed steps in the next batch.
 inline constexpr int kFrameIntervalMs = 16;
 
-/// The most simulated time one timer tick may catch up, s. When a frame takes longer than this
-/// (a slow machine, a debugger pause, a dragged window) the rest of the wall time is dropped:
-/// simulated time runs slower instead of the runner ever taking a larger step or piling up a
-/// backlog that freezes the window (the "spiral of death").
+/// The most simulated time one batch of steps may catch up, s. When a frame takes longer than this
+/// (a slow machine, a debugger pause, a dragged window, a step that is slow to compute) the rest
+/// of the wall time is dropped: simulated time runs slower instead of the runner ever taking a
+/// larger step or piling up a backlog it could never work off (the "spiral of death").
 inline constexpr double kMaxSimulatedTimePerFrame = 0.1;
 
-/// The most wall time one timer tick may spend stepping, ms. A 16 ms frame keeps about 4 ms for
-/// painting and input. A tick that runs out stops stepping and drops the rest of its backlog, as
-/// for kMaxSimulatedTimePerFrame: simulated time slows down, the step never changes, and a time
-/// step far too small for the machine (or a very large scene) leaves the window responsive.
-inline constexpr double kMaxSteppingWallTimePerTickMs = 12.0;
+/// The most wall time one batch of steps computes before it is shown, ms. The steps run on a
+/// worker thread, so this does not keep the window responsive (it always is); it keeps the canvas
+/// showing a new state about once per 16 ms frame when the steps cannot keep up, rather than
+/// only after a whole kMaxSimulatedTimePerFrame of them. A batch that runs out drops the rest of
+/// its backlog: simulated time slows down, the step never changes.
+inline constexpr double kMaxBatchWallTimeMs = 12.0;
+
+/// How long Step (→) waits for its step before leaving it to the background, ms. 100 ms is the
+/// limit under which a response feels immediate, so a step that fast is shown at once, as if it
+/// were taken on the spot; a slower one is shown when it ends, and meanwhile the window keeps
+/// painting and answering.
+inline constexpr int kStepWaitMs = 100;
+
+/// The runner measures how a run keeps up with the wall clock over windows of this much running
+/// wall time, s: long enough to hold several frames and batches, short enough for the window to
+/// say within a second that the simulation runs slower than real time.
+inline constexpr double kPaceWindowSeconds = 1.0;
+
+/// The speed shown is averaged over this many windows, so that a step which lands in one window
+/// but not the next does not make the figure jump from second to second.
+inline constexpr std::size_t kPaceWindowsAveraged = 3;
+
+/// A window that drops more than this fraction of the simulated time it owed runs slower than
+/// real time. 5 %: a single hitch of the event loop (a window dragged for a moment) is not
+/// reported; a run whose steps cannot keep up drops far more.
+inline constexpr double kBehindTolerance = 0.05;
 
 /// The time steps the attribute pane accepts, s. Below 10 µs a classroom scene needs more than
 /// 100 000 steps per simulated second, so it crawls; above 0.1 s (10 Hz) contacts and springs are

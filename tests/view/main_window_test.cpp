@@ -1,5 +1,7 @@
 // MainWindow, driven as a user would: keys, the default scene, opening a bad file.
 
+#include "model/example_scenes.h"
+#include "step_gate.h"
 #include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
@@ -15,12 +17,14 @@
 #include <QApplication>
 #include <QLabel>
 #include <QMessageBox>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QToolBar>
+#include <QWheelEvent>
 
 #include <cmath>
 
@@ -39,6 +43,33 @@ QString statusText(const MainWindow& window)
     return texts.join(QLatin1Char(' '));
 }
 
+/// Turns the mouse wheel over `viewport` by `notches`, at its centre.
+void turnWheel(QWidget* viewport, int notches)
+{
+    const QPointF at = QRectF(viewport->rect()).center();
+    QWheelEvent event(at, viewport->mapToGlobal(at), QPoint(), QPoint(0, QWheelEvent::DefaultDeltasPerStep * notches),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport, &event);
+}
+
+/// Counts the paint events a widget gets.
+class PaintCounter : public QObject {
+public:
+    explicit PaintCounter(QWidget* widget) { widget->installEventFilter(this); }
+    int count() const { return m_count; }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::Paint)
+            ++m_count;
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    int m_count = 0;
+};
+
 } // namespace
 
 class MainWindowTest : public QObject {
@@ -55,6 +86,8 @@ private slots:
     void runThatBlowsUpStopsWithAMessage();
     void badSceneOnTheCommandLineOpensTheDefaultSceneAndListsProblems();
     void savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout();
+    void slowRunSaysItRunsSlowerThanRealTimeAndWhy();
+    void slowStepIsComputedInTheBackground();
 
 private:
     /// Shows `window` and waits until it is active, so that its shortcuts work.
@@ -320,6 +353,100 @@ void MainWindowTest::savedWindowSizeIsKeptAndTheDefaultUsedOnlyWithout()
     second.show();
     QVERIFY(QTest::qWaitForWindowExposed(&second));
     QCOMPARE(second.size(), QSize(700, 500));
+}
+
+void MainWindowTest::slowRunSaysItRunsSlowerThanRealTimeAndWhy()
+{
+    test::StepGate gate;
+    MainWindow window;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    window.runner().setStepFunction(gate.function());
+    window.setScene(model::makePyramid(3), QStringLiteral("pyramid"));
+    QVERIFY(showActive(window));
+    auto* indicator = window.statusBar()->findChild<QLabel*>(QStringLiteral("paceStatus"));
+    QVERIFY(indicator != nullptr);
+    QVERIFY(indicator->isHidden());
+
+    // One step goes through, so that the window knows what a step costs.
+    gate.open(1);
+    QTest::keyClick(&window.canvas(), Qt::Key_Right);
+    QTRY_COMPARE(window.runner().world().stepCount, std::int64_t(1));
+    QVERIFY(indicator->isHidden());
+
+    // Play; the next step does not end. Meanwhile the window keeps painting (a zoom shows) and
+    // soon says that the simulation runs slower than real time, and why.
+    QTest::keyClick(&window.canvas(), Qt::Key_Space);
+    QVERIFY(window.runner().isRunning());
+    QTRY_COMPARE(gate.started(), 2);
+    const PaintCounter paints(window.canvas().viewport());
+    const double zoom = window.canvas().pixelsPerMetre();
+    turnWheel(window.canvas().viewport(), 1);
+    QVERIFY(window.canvas().pixelsPerMetre() > zoom);
+    QTRY_VERIFY(paints.count() > 0);
+    QTRY_VERIFY(!indicator->isHidden());
+    const QString text = indicator->text();
+    QVERIFY2(text.startsWith(QStringLiteral("Running at ")) && text.endsWith(QStringLiteral("× real time")),
+             qPrintable(text));
+    const QString why = indicator->toolTip();
+    QVERIFY2(why.contains(QStringLiteral("ms to compute; at 1× it may take at most")), qPrintable(why));
+    QVERIFY2(why.contains(QStringLiteral("bodies: %1, contacts: %2")
+                              .arg(window.runner().world().bodies.size())
+                              .arg(window.runner().pace().profile.contacts)),
+             qPrintable(why));
+    QVERIFY2(why.contains(QStringLiteral("use fewer bodies")), qPrintable(why));
+    QVERIFY(window.runner().pace().profile.contacts > 0); // the boxes rest on each other
+    QCOMPARE(window.runner().world().stepCount, std::int64_t(1));
+
+    // Space pauses at once, with the step still under way: the indicator goes, and the world
+    // stays as it is shown when the step ends.
+    QTest::keyClick(&window.canvas(), Qt::Key_Space);
+    QVERIFY(!window.runner().isRunning());
+    QVERIFY(indicator->isHidden());
+    gate.openForGood();
+    QTRY_VERIFY(!window.runner().isComputing());
+    QCOMPARE(window.runner().world().stepCount, std::int64_t(1));
+}
+
+void MainWindowTest::slowStepIsComputedInTheBackground()
+{
+    test::StepGate gate;
+    MainWindow window;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    window.runner().setStepFunction(gate.function());
+    window.setScene(test::hangingBoxWorld(), QStringLiteral("hanging box"));
+    QVERIFY(showActive(window));
+    auto* indicator = window.statusBar()->findChild<QLabel*>(QStringLiteral("paceStatus"));
+    QVERIFY(indicator != nullptr);
+    const model::World start = window.runner().world();
+
+    // → with a step that does not end: the key returns, the status bar says a step is being
+    // computed, and Step waits for it.
+    QTest::keyClick(&window.canvas(), Qt::Key_Right);
+    QVERIFY(window.runner().isComputingStep());
+    QVERIFY(!window.stepAction()->isEnabled());
+    QVERIFY(!indicator->isHidden());
+    QCOMPARE(indicator->text(), QStringLiteral("Computing a step…"));
+    QVERIFY(!indicator->toolTip().isEmpty());
+    // A second → meanwhile asks for nothing more.
+    QTest::keyClick(&window.canvas(), Qt::Key_Right);
+    gate.open(1);
+    QTRY_VERIFY(!window.runner().isComputing());
+    QCOMPARE(gate.started(), 1);
+    QCOMPARE(window.runner().world().stepCount, std::int64_t(1));
+    QVERIFY(window.stepAction()->isEnabled());
+    QVERIFY(indicator->isHidden());
+
+    // Undo while the next step is computed: the world goes back to the start, and the step, when
+    // it ends, does not land on it.
+    QTest::keyClick(&window.canvas(), Qt::Key_Right);
+    QVERIFY(window.runner().isComputingStep());
+    QTest::keyClick(&window.canvas(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(!window.runner().isComputingStep());
+    QVERIFY(window.stepAction()->isEnabled());
+    QVERIFY(window.runner().world() == start);
+    gate.openForGood();
+    QTRY_VERIFY(!window.runner().isComputing());
+    QVERIFY(window.runner().world() == start);
 }
 
 QTEST_MAIN(MainWindowTest)

@@ -1,13 +1,18 @@
-// SimulationRunner: the fixed-step accumulator, its per-frame cap, and play/pause/step/reset.
+// SimulationRunner: the fixed-step accumulator, its per-frame cap, play/pause/step/reset, and the
+// worker thread that keeps the event loop running while a step is slow.
 
 #include "controller/simulation.h"
+#include "model/example_scenes.h"
+#include "step_gate.h"
 #include "test_worlds.h"
 #include "view/simulation_runner.h"
 
 #include "controller/diagnostics.h"
 
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 
 using impetus::view::SimulationRunner;
 namespace model = impetus::model;
@@ -29,7 +34,24 @@ private slots:
     void divergingBatchIsTakenBackPausedAndReported();
     void divergingStepsAreReportedToo();
     void tinyTimeStepCannotFreezeATick();
+    void slowStepLeavesTheEventLoopRunning();
+    void slowRunFallsBehindAndSaysSo();
+    void editDuringASlowStepGoesToTheWorldShown();
+    void slowStepGoesOnInTheBackground();
+    void workerGivesTheSameBitsAsOneLoop();
 };
+
+namespace {
+
+/// True once a zero-length timer posted now has fired: the event loop is running.
+bool eventLoopRuns()
+{
+    bool fired = false;
+    QTimer::singleShot(0, [&fired] { fired = true; });
+    return QTest::qWaitFor([&fired] { return fired; });
+}
+
+} // namespace
 
 void SimulationRunnerTest::setWorldPausesAndEmitsWorldChanged()
 {
@@ -259,6 +281,158 @@ void SimulationRunnerTest::tinyTimeStepCannotFreezeATick()
     QCOMPARE(runner.advanceWallTime(0), std::int64_t(0));
     // The step itself never changed: the ball rose exactly steps × dt at 1 m/s.
     QVERIFY(qAbs(runner.world().bodies[0].state.position.y() - static_cast<double>(steps) * 1e-9) < 1e-12);
+}
+
+void SimulationRunnerTest::slowStepLeavesTheEventLoopRunning()
+{
+    test::StepGate gate;
+    SimulationRunner runner;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    runner.setStepFunction(gate.function());
+    runner.setWorld(test::risingBallWorld());
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+
+    runner.play();
+    QTRY_COMPARE(gate.started(), 1);
+    // The first step of the run is under way and does not end: the event loop runs meanwhile.
+    QVERIFY(eventLoopRuns());
+    QVERIFY(runner.isComputing());
+    QCOMPARE(runner.world().stepCount, std::int64_t(0));
+    QCOMPARE(stepped.count(), 0);
+
+    // Pause answers at once, with the step still under way, and the world stays as shown.
+    runner.pause();
+    QVERIFY(!runner.isRunning());
+    gate.open(1);
+    QTRY_VERIFY(!runner.isComputing());
+    QCOMPARE(gate.started(), 1); // the batch stopped after the step under way
+    QCOMPARE(runner.world().stepCount, std::int64_t(0));
+    QCOMPARE(stepped.count(), 0);
+}
+
+void SimulationRunnerTest::slowRunFallsBehindAndSaysSo()
+{
+    test::StepGate gate;
+    SimulationRunner runner;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    runner.setStepFunction(gate.function());
+    runner.setWorld(test::hangingBoxWorld());
+    QVERIFY(!runner.pace().costKnown);
+
+    // One step goes through: the runner knows what a step costs.
+    gate.open(1);
+    runner.stepOnce();
+    QTRY_COMPARE(runner.world().stepCount, std::int64_t(1));
+    QVERIFY(runner.pace().costKnown);
+    QVERIFY(!runner.pace().behind);
+
+    // The run's first step never ends: within a measuring window the runner reports that the run
+    // falls behind, while its timer goes on ticking.
+    QSignalSpy paced(&runner, &SimulationRunner::paceChanged);
+    runner.play();
+    QTRY_COMPARE(gate.started(), 2);
+    QTRY_VERIFY(runner.pace().behind);
+    QVERIFY(paced.count() >= 2); // play() reset it, a window ended
+    QCOMPARE(runner.pace().requestedSpeed, 1.0);
+    QCOMPARE(runner.pace().timeStep, runner.world().settings.timeStep);
+    QCOMPARE(runner.world().stepCount, std::int64_t(1));
+
+    runner.pause();
+    QVERIFY(!runner.pace().behind);
+    gate.openForGood();
+    QTRY_VERIFY(!runner.isComputing());
+    QCOMPARE(runner.world().stepCount, std::int64_t(1));
+}
+
+void SimulationRunnerTest::editDuringASlowStepGoesToTheWorldShown()
+{
+    test::StepGate gate;
+    SimulationRunner runner;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    runner.setStepFunction(gate.function());
+    runner.setWorld(test::risingBallWorld());
+    const double dt = runner.world().settings.timeStep;
+
+    runner.play();
+    QTRY_COMPARE(gate.started(), 1);
+    // An edit while a step is under way goes to the world shown; the run goes on.
+    runner.editWorld([](model::World& world) { world.bodies[0].state.velocity = impetus::Vec2(2, 1); });
+    QVERIFY(runner.isRunning());
+    QCOMPARE(runner.world().bodies[0].state.velocity, impetus::Vec2(2, 1));
+    gate.openForGood();
+    QTRY_VERIFY(runner.world().stepCount >= 3);
+    runner.pause();
+
+    // Every step shown was taken from the edited world, none twice: the ball moved 2 m/s along x
+    // for exactly as many steps as the world counts.
+    const auto steps = static_cast<double>(runner.world().stepCount);
+    QVERIFY(qAbs(runner.world().bodies[0].state.position.x() - 2 * dt * steps) < 1e-12);
+    QVERIFY(qAbs(runner.world().bodies[0].state.position.y() - dt * steps) < 1e-12);
+}
+
+void SimulationRunnerTest::slowStepGoesOnInTheBackground()
+{
+    test::StepGate gate;
+    SimulationRunner runner;
+    const auto release = qScopeGuard([&gate] { gate.openForGood(); });
+    runner.setStepFunction(gate.function());
+    runner.setWorld(test::hangingBoxWorld());
+    const model::World start = runner.world();
+    QSignalSpy computing(&runner, &SimulationRunner::computingStepChanged);
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+
+    // A Step that does not end in time goes on in the background; the call returns.
+    runner.stepOnce();
+    QVERIFY(runner.isComputingStep());
+    QCOMPARE(computing.count(), 1);
+    QCOMPARE(computing.at(0).at(0).toBool(), true);
+    QVERIFY(runner.world() == start);
+    QVERIFY(eventLoopRuns());
+
+    // A second Step while the first computes is taken after it.
+    runner.stepOnce();
+    gate.open(2);
+    QTRY_VERIFY(!runner.isComputingStep());
+    QCOMPARE(computing.count(), 2);
+    QCOMPARE(runner.world().stepCount, std::int64_t(2));
+    QCOMPARE(stepped.count(), 2);
+    model::World expected = start;
+    impetus::controller::Simulation simulation;
+    simulation.step(expected);
+    simulation.step(expected);
+    QVERIFY(runner.world() == expected);
+
+    // Pause drops a Step being computed: the world stays as shown.
+    runner.stepOnce();
+    QVERIFY(runner.isComputingStep());
+    runner.pause();
+    QVERIFY(!runner.isComputingStep());
+    gate.openForGood();
+    QTRY_VERIFY(!runner.isComputing());
+    QVERIFY(runner.world() == expected);
+}
+
+void SimulationRunnerTest::workerGivesTheSameBitsAsOneLoop()
+{
+    // A pyramid has contacts that warm-start from step to step: Steps, a run on the timer and
+    // stepBy, all on the worker, take exactly the steps one synchronous loop takes.
+    const model::World pyramid = model::makePyramid(6);
+    SimulationRunner runner;
+    runner.setWorld(pyramid);
+    runner.stepOnce();
+    runner.stepOnce();
+    QTRY_COMPARE(runner.world().stepCount, std::int64_t(2));
+    runner.play();
+    QTRY_VERIFY(runner.world().stepCount >= 40);
+    runner.pause();
+    runner.stepBy(3);
+    QTRY_VERIFY(!runner.isComputing());
+
+    model::World expected = pyramid;
+    impetus::controller::Simulation simulation;
+    for (std::int64_t i = 0; i < runner.world().stepCount; ++i)
+        simulation.step(expected);
+    QVERIFY(runner.world() == expected);
 }
 
 QTEST_MAIN(SimulationRunnerTest)
