@@ -14,35 +14,6 @@ namespace impetus::bench {
 
 namespace {
 
-/// Maps a point of a body's own frame (centre of mass at the origin) to the frame of the engine
-/// body that carries the shape: the identity for a body of its own, or the body's pose relative to
-/// the pivot for a wall riding on the turning container.
-using ShapePlacement = std::function<Vec2(const Vec2&)>;
-
-Vec2 identityPlacement(const Vec2& p) { return p; }
-
-/// The placement of a fixed body's shapes on a container body whose origin is the pivot and whose
-/// angle is 0 at the start.
-ShapePlacement containerPlacement(const model::Body& body, const Vec2& pivot)
-{
-    const Vec2 position = body.state.position;
-    const Scalar angle = body.state.angle;
-    return [position, angle, pivot](const Vec2& p) { return Vec2(position + rotate(p, angle) - pivot); };
-}
-
-/// The pose of a wall on the turning container, from the container's pose: the wall's start pose
-/// about the pivot, turned by the container's angle and carried to its position.
-Pose wallPose(const Pose& start, const Vec2& pivot, const Vec2& containerPosition, Scalar containerAngle)
-{
-    return Pose{containerPosition + rotate(Vec2(start.position - pivot), containerAngle), start.angle + containerAngle};
-}
-
-void rejectEllipse(const model::Body& body)
-{
-    if (std::holds_alternative<model::Ellipse>(body.shape))
-        throw std::invalid_argument("body \"" + body.name + "\" is an ellipse, which Box2D and Chipmunk do not have");
-}
-
 // ---- Box2D -----------------------------------------------------------------------------------
 
 b2Vec2 toBox2d(const Vec2& v) { return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y())); }
@@ -71,28 +42,11 @@ std::vector<Vec2> shrunkBySkin(const std::vector<Vec2>& piece)
     return shrunk;
 }
 
-/// A convex piece as polygons of at most b2_maxPolygonVertices: fans from vertex 0 that share an
-/// edge with the next. Every subset of a convex polygon's vertices, in order, is convex.
-std::vector<std::vector<Vec2>> box2dPolygons(const std::vector<Vec2>& piece)
-{
-    const std::size_t limit = b2_maxPolygonVertices;
-    if (piece.size() <= limit)
-        return {piece};
-    std::vector<std::vector<Vec2>> fans;
-    for (std::size_t k = 1; k + 1 < piece.size(); k += limit - 2) {
-        std::vector<Vec2>& fan = fans.emplace_back();
-        fan.push_back(piece.front());
-        for (std::size_t j = k; j < piece.size() && j <= k + limit - 2; ++j)
-            fan.push_back(piece[j]);
-    }
-    return fans;
-}
-
 class Box2dEngine final : public Engine {
 public:
-    Box2dEngine(const model::World& world, const Turning& turning)
+    Box2dEngine(const model::World& world, const Turning& turning, Scalar timeStep)
         : m_world(std::make_unique<b2World>(toBox2d(world.settings.gravity)))
-        , m_timeStep(static_cast<float>(world.settings.timeStep))
+        , m_timeStep(static_cast<float>(timeStep))
         , m_pivot(turning.pivot)
     {
         // Sleeping off everywhere: a body at rest still costs its full share of every step, in
@@ -115,14 +69,14 @@ public:
                 continue;
             }
             b2BodyDef def;
-            def.type = body.fixed ? b2_staticBody : b2_dynamicBody;
+            def.type = !body.fixed ? b2_dynamicBody : isKinematic(body) ? b2_kinematicBody : b2_staticBody;
             def.position = toBox2d(body.state.position);
             def.angle = static_cast<float>(body.state.angle);
             def.linearVelocity = toBox2d(body.state.velocity);
             def.angularVelocity = static_cast<float>(body.state.angularVelocity);
             def.allowSleep = false;
             b2Body* created = m_world->CreateBody(&def);
-            addFixtures(created, body, identityPlacement);
+            addFixtures(created, body, ownPlacement());
             if (!body.fixed) {
                 // Impetus's own mass and moment, not Box2D's float recomputation from the density.
                 b2MassData mass;
@@ -133,9 +87,13 @@ public:
             }
             m_bodies.push_back(created);
         }
+        for (const model::Joint& joint : world.joints) {
+            if (jointActs(world, joint))
+                addJoint(joint);
+        }
     }
 
-    std::string name() const override { return "Box2D"; }
+    std::string name() const override { return "Box2D 2.4"; }
 
     void step() override { m_world->Step(m_timeStep, kBox2dVelocityIterations, kBox2dPositionIterations); }
 
@@ -156,6 +114,54 @@ public:
     }
 
 private:
+    /// The engine body of Impetus body `id`; a joint on a wall of the container is refused.
+    b2Body* jointBody(model::BodyId id) const
+    {
+        if (m_bodies[id.index] == nullptr)
+            throw std::invalid_argument("a joint on a wall of the turning container is not supported");
+        return m_bodies[id.index];
+    }
+
+    /// A pin as a revolute joint, a rod as a distance joint held at its length (no spring). A
+    /// joint to the world holds on to a static body at the origin, whose frame is the world's.
+    void addJoint(const model::Joint& joint)
+    {
+        b2Body* a = jointBody(joint.bodyA);
+        b2Body* b = nullptr;
+        if (joint.bodyB) {
+            b = jointBody(*joint.bodyB);
+        } else {
+            if (m_ground == nullptr) {
+                b2BodyDef def;
+                m_ground = m_world->CreateBody(&def);
+            }
+            b = m_ground;
+        }
+        if (joint.type == model::JointType::Pin) {
+            b2RevoluteJointDef def;
+            def.bodyA = a;
+            def.bodyB = b;
+            def.localAnchorA = toBox2d(joint.anchorA);
+            def.localAnchorB = toBox2d(joint.anchorB);
+            def.referenceAngle = b->GetAngle() - a->GetAngle();
+            def.collideConnected = true;
+            m_world->CreateJoint(&def);
+            return;
+        }
+        b2DistanceJointDef def;
+        def.bodyA = a;
+        def.bodyB = b;
+        def.localAnchorA = toBox2d(joint.anchorA);
+        def.localAnchorB = toBox2d(joint.anchorB);
+        def.length = static_cast<float>(joint.length);
+        def.minLength = def.length;
+        def.maxLength = def.length;
+        def.stiffness = 0; // rigid
+        def.damping = 0;
+        def.collideConnected = true;
+        m_world->CreateJoint(&def);
+    }
+
     void addFixtures(b2Body* target, const model::Body& body, const ShapePlacement& place)
     {
         b2FixtureDef def;
@@ -171,7 +177,7 @@ private:
             return;
         }
         for (const auto& piece : body.geometry.convexPieces) {
-            for (const auto& polygon : box2dPolygons(shrunkBySkin(piece))) {
+            for (const auto& polygon : splitIntoFans(shrunkBySkin(piece), b2_maxPolygonVertices)) {
                 std::vector<b2Vec2> points;
                 for (const Vec2& v : polygon)
                     points.push_back(toBox2d(place(v)));
@@ -187,6 +193,7 @@ private:
     float m_timeStep;
     Vec2 m_pivot;
     b2Body* m_container = nullptr; ///< the turning container, when the scene turns
+    b2Body* m_ground = nullptr; ///< what joints to the world hold on to, once there is one
     std::vector<b2Body*> m_bodies; ///< per Impetus body; null for a wall on the container
     std::vector<Pose> m_start; ///< per Impetus body, for the walls
 };
@@ -197,9 +204,9 @@ cpVect toChipmunk(const Vec2& v) { return cpv(v.x(), v.y()); }
 
 class ChipmunkEngine final : public Engine {
 public:
-    ChipmunkEngine(const model::World& world, const Turning& turning)
+    ChipmunkEngine(const model::World& world, const Turning& turning, Scalar timeStep)
         : m_space(cpSpaceNew())
-        , m_timeStep(world.settings.timeStep)
+        , m_timeStep(timeStep)
         , m_pivot(turning.pivot)
     {
         cpSpaceSetGravity(m_space, toChipmunk(world.settings.gravity));
@@ -219,23 +226,31 @@ public:
                 m_bodies.push_back(nullptr);
                 continue;
             }
-            cpBody* created = addBody(body.fixed ? cpBodyNewStatic() : cpBodyNew(body.mass, body.inertia));
+            cpBody* created = addBody(!body.fixed           ? cpBodyNew(body.mass, body.inertia)
+                                      : isKinematic(body) ? cpBodyNewKinematic()
+                                                          : cpBodyNewStatic());
             // Pose first: a static body's shapes are indexed where the body is when they are added.
             cpBodySetPosition(created, toChipmunk(body.state.position));
             cpBodySetAngle(created, body.state.angle);
-            if (!body.fixed) {
+            if (!body.fixed || isKinematic(body)) {
                 cpBodySetVelocity(created, toChipmunk(body.state.velocity));
                 cpBodySetAngularVelocity(created, body.state.angularVelocity);
             }
-            addShapes(created, body, identityPlacement);
+            addShapes(created, body, ownPlacement());
             m_bodies.push_back(created);
+        }
+        for (const model::Joint& joint : world.joints) {
+            if (jointActs(world, joint))
+                addJoint(joint);
         }
     }
 
     ~ChipmunkEngine() override
     {
-        // cpSpaceFree leaves the bodies and shapes that were added to it to their owner.
+        // cpSpaceFree leaves the bodies, shapes and constraints that were added to it to their owner.
         cpSpaceFree(m_space);
+        for (cpConstraint* constraint : m_constraints)
+            cpConstraintFree(constraint);
         for (cpShape* shape : m_shapes)
             cpShapeFree(shape);
         for (cpBody* body : m_ownedBodies)
@@ -272,6 +287,33 @@ private:
         return cpSpaceAddBody(m_space, body);
     }
 
+    /// The engine body of Impetus body `id`; a joint on a wall of the container is refused.
+    cpBody* jointBody(model::BodyId id) const
+    {
+        if (m_bodies[id.index] == nullptr)
+            throw std::invalid_argument("a joint on a wall of the turning container is not supported");
+        return m_bodies[id.index];
+    }
+
+    /// A pin as a pivot joint, a rod as a pin joint (Chipmunk's rigid distance) set to the rod's
+    /// length. A joint to the world holds on to the space's static body, whose frame is the
+    /// world's. Constraints let their bodies collide by default, as Impetus does.
+    void addJoint(const model::Joint& joint)
+    {
+        cpBody* a = jointBody(joint.bodyA);
+        cpBody* b = joint.bodyB ? jointBody(*joint.bodyB) : cpSpaceGetStaticBody(m_space);
+        const cpVect anchorA = toChipmunk(joint.anchorA);
+        const cpVect anchorB = toChipmunk(joint.anchorB);
+        cpConstraint* constraint = nullptr;
+        if (joint.type == model::JointType::Pin) {
+            constraint = cpPivotJointNew2(a, b, anchorA, anchorB);
+        } else {
+            constraint = cpPinJointNew(a, b, anchorA, anchorB);
+            cpPinJointSetDist(constraint, joint.length);
+        }
+        m_constraints.push_back(cpSpaceAddConstraint(m_space, constraint));
+    }
+
     void addShapes(cpBody* target, const model::Body& body, const ShapePlacement& place)
     {
         // Friction and elasticity multiply in Chipmunk: √μ per shape gives μ for two alike.
@@ -304,6 +346,7 @@ private:
     std::vector<Pose> m_start; ///< per Impetus body, for the walls
     std::vector<cpBody*> m_ownedBodies;
     std::vector<cpShape*> m_shapes;
+    std::vector<cpConstraint*> m_constraints;
 };
 
 } // namespace
@@ -311,11 +354,12 @@ private:
 // ---- Impetus ---------------------------------------------------------------------------------
 
 ImpetusEngine::ImpetusEngine(const model::World& world, const Turning& turning,
-                             const controller::SolverSettings& settings)
+                             const controller::SolverSettings& settings, Scalar timeStep)
     : m_world(world)
     , m_turning(turning)
     , m_simulation(settings)
 {
+    m_world.settings.timeStep = timeStep;
 }
 
 void ImpetusEngine::step()
@@ -334,6 +378,9 @@ void ImpetusEngine::step()
     m_profileSum.positionMs += last.positionMs;
     m_profileSum.eventsMs += last.eventsMs;
     m_profileSum.totalMs += last.totalMs;
+    m_profileSum.contacts += last.contacts;
+    m_profileSum.impacts += last.impacts;
+    m_profileSum.substeps += last.substeps;
 }
 
 std::vector<Pose> ImpetusEngine::poses() const
@@ -352,14 +399,14 @@ void announceChipmunk()
     cpSpaceFree(cpSpaceNew());
 }
 
-std::unique_ptr<Engine> makeBox2dEngine(const model::World& world, const Turning& turning)
+std::unique_ptr<Engine> makeBox2dEngine(const model::World& world, const Turning& turning, Scalar timeStep)
 {
-    return std::make_unique<Box2dEngine>(world, turning);
+    return std::make_unique<Box2dEngine>(world, turning, timeStep);
 }
 
-std::unique_ptr<Engine> makeChipmunkEngine(const model::World& world, const Turning& turning)
+std::unique_ptr<Engine> makeChipmunkEngine(const model::World& world, const Turning& turning, Scalar timeStep)
 {
-    return std::make_unique<ChipmunkEngine>(world, turning);
+    return std::make_unique<ChipmunkEngine>(world, turning, timeStep);
 }
 
 std::string box2dVersion()
@@ -369,5 +416,54 @@ std::string box2dVersion()
 }
 
 std::string chipmunkVersion() { return cpVersionString; }
+
+// ---- What the adapters share ------------------------------------------------------------------
+
+ShapePlacement ownPlacement()
+{
+    return [](const Vec2& p) { return p; };
+}
+
+ShapePlacement containerPlacement(const model::Body& body, const Vec2& pivot)
+{
+    const Vec2 position = body.state.position;
+    const Scalar angle = body.state.angle;
+    return [position, angle, pivot](const Vec2& p) { return Vec2(position + rotate(p, angle) - pivot); };
+}
+
+Pose wallPose(const Pose& start, const Vec2& pivot, const Vec2& containerPosition, Scalar containerAngle)
+{
+    return Pose{containerPosition + rotate(Vec2(start.position - pivot), containerAngle), start.angle + containerAngle};
+}
+
+void rejectEllipse(const model::Body& body)
+{
+    if (std::holds_alternative<model::Ellipse>(body.shape))
+        throw std::invalid_argument("body \"" + body.name + "\" is an ellipse, which the peer engines do not have");
+}
+
+bool jointActs(const model::World& world, const model::Joint& joint)
+{
+    return !world.body(joint.bodyA).fixed || (joint.bodyB && !world.body(*joint.bodyB).fixed);
+}
+
+bool isKinematic(const model::Body& body)
+{
+    return body.fixed && (body.state.velocity != Vec2::Zero() || body.state.angularVelocity != 0);
+}
+
+std::vector<std::vector<Vec2>> splitIntoFans(const std::vector<Vec2>& piece, std::size_t limit)
+{
+    if (piece.size() <= limit)
+        return {piece};
+    std::vector<std::vector<Vec2>> fans;
+    for (std::size_t k = 1; k + 1 < piece.size(); k += limit - 2) {
+        std::vector<Vec2>& fan = fans.emplace_back();
+        fan.push_back(piece.front());
+        for (std::size_t j = k; j < piece.size() && j <= k + limit - 2; ++j)
+            fan.push_back(piece[j]);
+    }
+    return fans;
+}
 
 } // namespace impetus::bench

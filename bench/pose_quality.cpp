@@ -3,6 +3,7 @@
 #include "controller/collision/broad_phase.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <variant>
@@ -121,6 +122,25 @@ Overlap deepestOverlap(const model::World& world, std::span<const Pose> poses)
             deepest = Overlap{depth, proxies[pair.first].body, proxies[pair.second].body};
     }
     return deepest;
+}
+
+Scalar worstJointError(const model::World& world, std::span<const Pose> poses)
+{
+    if (poses.size() != world.bodies.size())
+        throw std::invalid_argument("worstJointError: one pose per body is needed");
+    const auto worldPoint = [&](model::BodyId id, const Vec2& anchor) {
+        const Pose& pose = poses[id.index];
+        return Vec2(pose.position + rotate(anchor, pose.angle));
+    };
+    Scalar worst = 0;
+    for (const model::Joint& joint : world.joints) {
+        const Vec2 a = worldPoint(joint.bodyA, joint.anchorA);
+        // A joint to the world holds on to anchorB as a world point.
+        const Vec2 b = joint.bodyB ? worldPoint(*joint.bodyB, joint.anchorB) : joint.anchorB;
+        const Scalar distance = (b - a).norm();
+        worst = std::max(worst, joint.type == model::JointType::Pin ? distance : std::abs(distance - joint.length));
+    }
+    return worst;
 }
 
 } // namespace impetus::bench

@@ -2,7 +2,8 @@
 /// \file pose_quality.h
 /// How good a set of final poses is, measured the same way whichever engine produced them: the
 /// deepest overlap between any two bodies, found with a broad phase and a separating-axis test
-/// written for the benchmark alone (so no engine grades its own work).
+/// written for the benchmark alone (so no engine grades its own work), and how far the joints
+/// have come apart.
 
 #include "peer_engines.h"
 
@@ -28,5 +29,10 @@ struct Overlap {
 /// its nearest vertex to the centre; for two circles r₁ + r₂ − |c₁ − c₂|. A body of several convex
 /// pieces overlaps as deep as its deepest piece. Circles, boxes and polygons only.
 Overlap deepestOverlap(const model::World& world, std::span<const Pose> poses);
+
+/// How far the joints of `world` are from holding at `poses` (one per body), m: the largest,
+/// over every joint, of the distance between a pin's two anchor points, or of how much a rod's
+/// anchors are further apart or closer than its length. 0 for a world without joints.
+Scalar worstJointError(const model::World& world, std::span<const Pose> poses);
 
 } // namespace impetus::bench

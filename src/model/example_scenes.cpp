@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <numbers>
 #include <random>
 #include <string>
@@ -39,9 +40,60 @@ constexpr Scalar kRainAngleJitter = 0.4;
 
 /// Rotating box: circle radius and grid pitch, m, and the container's inside side as a multiple of
 /// the grid's side (room for the circles to tumble).
-constexpr Scalar kTumblerCircleRadius = 0.25;
-constexpr Scalar kTumblerPitch = 0.6;
-constexpr Scalar kTumblerRoom = 1.5;
+constexpr Scalar kRotatingBoxCircleRadius = 0.25;
+constexpr Scalar kRotatingBoxPitch = 0.6;
+constexpr Scalar kRotatingBoxRoom = 1.5;
+
+// Box2D v3's scenes (its shared/benchmarks.c), with its sizes.
+
+/// Smash: the block's side (m), density (kg/m²), start x (m) and speed along +x (m/s); the wall's
+/// box side (m, also the grid pitch) and the x of its first column (m).
+constexpr Scalar kSmashBlockSize = 8.0;
+constexpr Scalar kSmashBlockDensity = 8.0;
+constexpr Scalar kSmashBlockStartX = -20.0;
+constexpr Scalar kSmashBlockSpeed = 40.0;
+constexpr Scalar kSmashBoxSize = 0.4;
+constexpr Scalar kSmashWallLeft = 30.0;
+
+/// Spinner: the ring's segment count, radius (m) and centre height (m).
+constexpr int kSpinnerRingSegments = 360;
+constexpr Scalar kSpinnerRingRadius = 40.0;
+constexpr Scalar kSpinnerRingCentreY = 32.0;
+/// Spinner: the arm, v3's box of half extents 0.4 m × 20 m rounded by 0.2 m, as its full extent
+/// (m), and the height of its centre, which is also its pivot (m).
+constexpr Scalar kSpinnerArmWidth = 1.2;
+constexpr Scalar kSpinnerArmLength = 40.4;
+constexpr Scalar kSpinnerArmCentreY = 12.0;
+/// Spinner: the bodies' density (kg/m²), the grid's pitch (m), its first cell (m) and its width
+/// in cells: x runs from −23 m in steps of 0.5 m while below 23 m.
+constexpr Scalar kSpinnerDensity = 0.25;
+constexpr Scalar kSpinnerPitch = 0.5;
+constexpr Scalar kSpinnerGridLeft = -23.0;
+constexpr Scalar kSpinnerGridBottom = 2.0;
+constexpr int kSpinnerColumns = 92;
+/// Spinner: the capsule (a segment of half length kSpinnerCapsuleHalfLength swept by a disc of
+/// radius kSpinnerCapsuleRadius, m) as an octagon: each cap is a half polygon of
+/// kSpinnerCapSegments edges inscribed in its half circle. Three keeps the octagon within Box2D's
+/// 8 vertices per polygon.
+constexpr Scalar kSpinnerCapsuleHalfLength = 0.25;
+constexpr Scalar kSpinnerCapsuleRadius = 0.25;
+constexpr int kSpinnerCapSegments = 3;
+/// Spinner: the circle's radius and the square's side, m.
+constexpr Scalar kSpinnerCircleRadius = 0.35;
+constexpr Scalar kSpinnerSquareSize = 0.7;
+/// Spinner: the bodies come in turn as a capsule, a circle and a square.
+constexpr int kSpinnerShapeKinds = 3;
+
+/// Tumbler: the container's inside half side (m), the boxes' side (m) and their grid pitch (m).
+constexpr Scalar kTumblerHalfInside = 9.5;
+constexpr Scalar kTumblerBoxSize = 0.25;
+constexpr Scalar kTumblerPitch = 0.4;
+
+/// Joint grid: the discs' radius (m), the grid pitch (m), and how many fixed discs lie on each
+/// side of the middle one in the top row.
+constexpr Scalar kJointGridRadius = 0.4;
+constexpr Scalar kJointGridPitch = 1.0;
+constexpr int kJointGridFixedHalfWidth = 3;
 
 /// Radius of the cradle's balls, m.
 constexpr Scalar kCradleRadius = 0.5;
@@ -61,14 +113,16 @@ World makeWorld(const SceneOptions& options)
     return world;
 }
 
-/// Appends a body with everything derived. Names are unique because every caller numbers them.
+/// Appends a body with everything derived, of `density` kg/m² (the default 1 unless given).
+/// Names are unique because every caller numbers them.
 void addBody(World& world, std::string name, Shape shape, const Vec2& position, bool fixed,
-             const SceneOptions& options)
+             const SceneOptions& options, Scalar density = MassSpec{}.value)
 {
     Body body;
     body.name = std::move(name);
     body.shape = std::move(shape);
     body.state.position = position;
+    body.massSpec = MassSpec{MassMode::Density, density};
     body.material = Material{options.restitution, options.friction};
     body.fixed = fixed;
     if (fixed)
@@ -126,6 +180,51 @@ std::vector<Vec2> randomConvexPolygon(std::mt19937& random)
         vertices.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
     }
     return vertices;
+}
+
+/// Appends a polygon body whose vertices are given in world coordinates relative to `origin`:
+/// the body's position becomes its centroid, origin + centroidOffset.
+void addPolygonAt(World& world, std::string name, std::vector<Vec2> vertices, const Vec2& origin, bool fixed,
+                  const SceneOptions& options, Scalar density = MassSpec{}.value)
+{
+    addBody(world, std::move(name), Polygon{std::move(vertices)}, origin, fixed, options, density);
+    Body& body = world.bodies.back();
+    body.state.position = origin + body.geometry.centroidOffset;
+}
+
+/// The convex polygon inscribed in a capsule along x (a segment from −halfLength to +halfLength
+/// swept by a disc of `radius`), counter-clockwise: each cap is a half polygon of `capSegments`
+/// edges, its vertices on the cap's half circle.
+std::vector<Vec2> capsulePolygon(Scalar halfLength, Scalar radius, int capSegments)
+{
+    std::vector<Vec2> vertices;
+    const Scalar step = std::numbers::pi / capSegments;
+    // The right cap from straight down to straight up, then the left cap from up to down.
+    for (int i = 0; i <= capSegments; ++i) {
+        const Scalar angle = -std::numbers::pi / 2 + i * step;
+        vertices.emplace_back(halfLength + radius * std::cos(angle), radius * std::sin(angle));
+    }
+    for (int i = 0; i <= capSegments; ++i) {
+        const Scalar angle = std::numbers::pi / 2 + i * step;
+        vertices.emplace_back(-halfLength + radius * std::cos(angle), radius * std::sin(angle));
+    }
+    return vertices;
+}
+
+/// A pin joint between bodies a and b at the world point `anchor`, with its anchors in the
+/// bodies' frames as a scene file's loader derives them.
+Joint pinJoint(const World& world, std::uint32_t a, std::uint32_t b, const Vec2& anchor)
+{
+    Joint joint;
+    joint.type = JointType::Pin;
+    joint.bodyA = BodyId{a};
+    joint.bodyB = BodyId{b};
+    joint.worldAnchor = anchor;
+    const BodyState& stateA = world.bodies[a].state;
+    const BodyState& stateB = world.bodies[b].state;
+    joint.anchorA = rotate(Vec2(anchor - stateA.position), -stateA.angle);
+    joint.anchorB = rotate(Vec2(anchor - stateB.position), -stateB.angle);
+    return joint;
 }
 
 } // namespace
@@ -196,9 +295,9 @@ World makeRotatingBoxWithCircles(int circles, const SceneOptions& options)
 {
     World world = makeWorld(options);
     const int columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<Scalar>(circles)))));
-    const Scalar gridSide = columns * kTumblerPitch;
+    const Scalar gridSide = columns * kRotatingBoxPitch;
     // Whole metres, so that the walls' coordinates are exact.
-    const Scalar halfInside = std::ceil(kTumblerRoom * gridSide / 2);
+    const Scalar halfInside = std::ceil(kRotatingBoxRoom * gridSide / 2);
     const Scalar wallCentre = halfInside + kWallThickness / 2;
     const Scalar outside = 2 * (halfInside + kWallThickness);
 
@@ -209,10 +308,10 @@ World makeRotatingBoxWithCircles(int circles, const SceneOptions& options)
     addBody(world, "top wall", Box{outside, kWallThickness}, Vec2(0, wallCentre), true, options);
     addBody(world, "left wall", Box{kWallThickness, 2 * halfInside}, Vec2(-wallCentre, 0), true, options);
 
-    const Scalar first = -(columns - 1) * kTumblerPitch / 2;
+    const Scalar first = -(columns - 1) * kRotatingBoxPitch / 2;
     for (int n = 0; n < circles; ++n) {
-        const Vec2 position(first + (n % columns) * kTumblerPitch, first + (n / columns) * kTumblerPitch);
-        addBody(world, "circle" + std::to_string(n), Circle{kTumblerCircleRadius}, position, false, options);
+        const Vec2 position(first + (n % columns) * kRotatingBoxPitch, first + (n / columns) * kRotatingBoxPitch);
+        addBody(world, "circle" + std::to_string(n), Circle{kRotatingBoxCircleRadius}, position, false, options);
     }
     return world;
 }
@@ -225,6 +324,114 @@ void spinFixedBodies(World& world, const Vec2& pivot, Scalar angularVelocity)
         body.state.velocity = cross(angularVelocity, Vec2(body.state.position - pivot));
         body.state.angularVelocity = angularVelocity;
     }
+}
+
+World makeSmash(int columns, int rows, const SceneOptions& options)
+{
+    World world = makeWorld(options);
+    world.settings.gravity = Vec2::Zero();
+    addBody(world, "block", Box{kSmashBlockSize, kSmashBlockSize}, Vec2(kSmashBlockStartX, 0), false, options,
+            kSmashBlockDensity);
+    world.bodies.back().state.velocity = Vec2(kSmashBlockSpeed, 0);
+    for (int i = 0; i < columns; ++i) {
+        for (int j = 0; j < rows; ++j) {
+            const Vec2 position(kSmashWallLeft + i * kSmashBoxSize, (j - rows / 2.0) * kSmashBoxSize);
+            addBody(world, "box" + std::to_string(i) + "_" + std::to_string(j), Box{kSmashBoxSize, kSmashBoxSize},
+                    position, false, options);
+        }
+    }
+    return world;
+}
+
+World makeSpinner(int count, const SceneOptions& options)
+{
+    World world = makeWorld(options);
+
+    // The ring: the chain's points clockwise from angle 0, as v3 lays them out; block n lies
+    // outside the segment from point n to point n + 1, listed counter-clockwise.
+    const Vec2 centre(0, kSpinnerRingCentreY);
+    const auto ringPoint = [&](int n, Scalar radius) {
+        const Scalar angle = -2 * std::numbers::pi * n / kSpinnerRingSegments;
+        return Vec2(centre + radius * Vec2(std::cos(angle), std::sin(angle)));
+    };
+    for (int n = 0; n < kSpinnerRingSegments; ++n) {
+        const Vec2 inner0 = ringPoint(n, kSpinnerRingRadius);
+        const Vec2 inner1 = ringPoint(n + 1, kSpinnerRingRadius);
+        const Vec2 outer0 = ringPoint(n, kSpinnerRingRadius + kWallThickness);
+        const Vec2 outer1 = ringPoint(n + 1, kSpinnerRingRadius + kWallThickness);
+        addPolygonAt(world, "ring" + std::to_string(n), {Vec2::Zero(), outer1 - inner1, outer0 - inner1, inner0 - inner1},
+                     inner1, true, options);
+    }
+
+    SceneOptions armOptions = options;
+    armOptions.friction = 0;
+    addBody(world, "arm", Box{kSpinnerArmWidth, kSpinnerArmLength}, Vec2(0, kSpinnerArmCentreY), true, armOptions);
+    world.bodies.back().state.angularVelocity = kSpinnerAngularVelocity;
+
+    const std::vector<Vec2> capsule =
+        capsulePolygon(kSpinnerCapsuleHalfLength, kSpinnerCapsuleRadius, kSpinnerCapSegments);
+    for (int n = 0; n < count; ++n) {
+        const Vec2 position(kSpinnerGridLeft + (n % kSpinnerColumns) * kSpinnerPitch,
+                            kSpinnerGridBottom + (n / kSpinnerColumns) * kSpinnerPitch);
+        std::string name = "body" + std::to_string(n);
+        switch (n % kSpinnerShapeKinds) {
+        case 0:
+            addPolygonAt(world, std::move(name), capsule, position, false, options, kSpinnerDensity);
+            break;
+        case 1:
+            addBody(world, std::move(name), Circle{kSpinnerCircleRadius}, position, false, options, kSpinnerDensity);
+            break;
+        default:
+            addBody(world, std::move(name), Box{kSpinnerSquareSize, kSpinnerSquareSize}, position, false, options,
+                    kSpinnerDensity);
+        }
+    }
+    return world;
+}
+
+World makeTumbler(int gridCount, const SceneOptions& options)
+{
+    World world = makeWorld(options);
+    const Scalar pivotY = kTumblerPivotHeight;
+    const Scalar wallCentre = kTumblerHalfInside + kWallThickness / 2;
+    const Scalar outside = 2 * (kTumblerHalfInside + kWallThickness);
+    const Scalar inside = 2 * kTumblerHalfInside;
+    addBody(world, "bottom wall", Box{outside, kWallThickness}, Vec2(0, pivotY - wallCentre), true, options);
+    addBody(world, "right wall", Box{kWallThickness, inside}, Vec2(wallCentre, pivotY), true, options);
+    addBody(world, "top wall", Box{outside, kWallThickness}, Vec2(0, pivotY + wallCentre), true, options);
+    addBody(world, "left wall", Box{kWallThickness, inside}, Vec2(-wallCentre, pivotY), true, options);
+
+    const Scalar first = -kTumblerPitch / 2 * gridCount;
+    for (int row = 0; row < gridCount; ++row) {
+        for (int column = 0; column < gridCount; ++column) {
+            const Vec2 position(first + column * kTumblerPitch, pivotY + first + row * kTumblerPitch);
+            addBody(world, "box" + std::to_string(row) + "_" + std::to_string(column),
+                    Box{kTumblerBoxSize, kTumblerBoxSize}, position, false, options);
+        }
+    }
+    return world;
+}
+
+World makeJointGrid(int size, const SceneOptions& options)
+{
+    World world = makeWorld(options);
+    const int middle = size / 2;
+    for (int k = 0; k < size; ++k) {
+        for (int i = 0; i < size; ++i) {
+            const bool fixed = i == 0 && std::abs(k - middle) <= kJointGridFixedHalfWidth;
+            addBody(world, "disc" + std::to_string(k) + "_" + std::to_string(i), Circle{kJointGridRadius},
+                    Vec2(k * kJointGridPitch, -i * kJointGridPitch), fixed, options);
+            const auto index = static_cast<std::uint32_t>(world.bodies.size() - 1);
+            const Vec2 position = world.bodies.back().state.position;
+            if (i > 0)
+                world.joints.push_back(pinJoint(world, index - 1, index, position + Vec2(0, kJointGridPitch / 2)));
+            if (k > 0) {
+                world.joints.push_back(pinJoint(world, index - static_cast<std::uint32_t>(size), index,
+                                                position - Vec2(kJointGridPitch / 2, 0)));
+            }
+        }
+    }
+    return world;
 }
 
 World makeNewtonsCradle(int balls, Scalar speed, const SceneOptions& options)

@@ -1,8 +1,9 @@
 #pragma once
 /// \file example_scenes.h
 /// Scenes built in code: the standard rigid-body stress tests (Box2D's pyramid and "many
-/// pyramids", a polygon rain, a tumbler full of circles) and two small textbook set-ups. The tests,
-/// the engine comparison in bench/ and the example files all start from these.
+/// pyramids", a polygon rain, a turning box full of circles, and Box2D v3's smash, spinner,
+/// tumbler and joint grid) and two small textbook set-ups. The tests, the engine comparison in
+/// bench/ and the example files all start from these.
 ///
 /// Every builder returns a fully built World: updateDerived() has been called on every body, and
 /// the world runs the semi-implicit Euler integrator, which is what real-time engines (Box2D,
@@ -15,6 +16,8 @@
 #include "model/constants.h"
 #include "model/scalar.h"
 #include "model/world.h"
+
+#include <numbers>
 
 namespace impetus::model {
 
@@ -80,6 +83,68 @@ World makeRotatingBoxWithCircles(int circles = 2000, const SceneOptions& options
 /// every step turns the velocity with it and keeps the bodies on their circles (to ½ω²r·h² per
 /// step).
 void spinFixedBodies(World& world, const Vec2& pivot, Scalar angularVelocity);
+
+/// Box2D v3's "smash" (its shared/benchmarks.c), in zero gravity: a block 8 m × 8 m of 8 kg/m²
+/// centred at (−20, 0) m flies at 40 m/s along +x into a wall of `columns` × `rows` boxes of
+/// 0.4 m × 0.4 m at rest, laid side by side on a 0.4 m grid (touching, up to the rounding of
+/// 0.4 m in binary): box (i, j) is centred at (30 + 0.4·i, 0.4·(j − rows/2)) m. The block's front
+/// face reaches the wall after about 1.15 s. v3 starts the wall asleep; sleeping is left to the
+/// caller (the benchmark keeps it off).
+/// Body order: the block, then the wall column by column from the left, each from the bottom up.
+/// Preconditions: columns, rows ≥ 0.
+World makeSmash(int columns = 120, int rows = 80, const SceneOptions& options = {});
+
+/// The surface of the spinner's bodies and walls, as in Box2D v3's spinner: μ = 0.1, e = 0.1.
+inline constexpr SceneOptions kSpinnerSurface{.friction = 0.1, .restitution = 0.1};
+
+/// Angular velocity of the spinner's arm, rad/s, counter-clockwise (v3's motor speed).
+inline constexpr Scalar kSpinnerAngularVelocity = 5.0;
+
+/// Box2D v3's "spinner": `count` bodies of 0.25 kg/m² (in turn a capsule 1 m × 0.5 m, a circle of
+/// radius 0.35 m and a square of 0.7 m) on a 0.5 m grid 92 wide, starting at (−23, 2) m row by
+/// row upwards (so neighbours start overlapping, as in v3, and are pushed apart in the first
+/// steps), inside a closed ring of radius 40 m centred at (0, 32) m, stirred by an arm 1.2 m ×
+/// 40.4 m centred at (0, 12) m that turns at kSpinnerAngularVelocity about its centre.
+/// Impetus has neither capsules nor chains nor motors, so: each capsule is the convex octagon
+/// inscribed in it (its caps are half hexagons); the ring, one chain of 360 segments in v3, is
+/// 360 fixed blocks 1 m thick whose inner faces are the chain's segments; and the arm, a
+/// motorised body in v3 (its motor has unbounded torque), is a fixed body with angular velocity
+/// kSpinnerAngularVelocity, which makes it a kinematic body (it keeps that velocity; its centre
+/// stays put). The arm is frictionless whatever the options say, as in v3; `options` give the
+/// bodies' and the ring's surface. The arm and the ring take options.restitution too: v3 gives
+/// them 0, but with e = max(e₁, e₂) a contact with them bounces the same either way.
+/// Body order: the 360 ring blocks clockwise from (40, 32) m, the arm, then the bodies in grid
+/// order (capsule, circle, square, capsule, …). Precondition: count ≥ 0.
+World makeSpinner(int count = 6076, const SceneOptions& options = kSpinnerSurface);
+
+/// Angular velocity of the tumbler's container, rad/s, counter-clockwise: 25°/s, v3's motor speed.
+inline constexpr Scalar kTumblerAngularVelocity = 25.0 * std::numbers::pi / 180.0;
+
+/// Height of the point the tumbler's container turns about, (0, kTumblerPivotHeight), m.
+inline constexpr Scalar kTumblerPivotHeight = 10.0;
+
+/// Box2D v3's "tumbler": a closed square container, 19 m × 19 m inside with walls 1 m thick,
+/// centred on its pivot (0, kTumblerPivotHeight), holding `gridCount` × `gridCount` boxes of
+/// 0.25 m × 0.25 m at rest on a 0.4 m grid whose first box is centred at (−0.2·gridCount,
+/// kTumblerPivotHeight − 0.2·gridCount) m. In v3 the container is a body turned by a motor of
+/// 1e8 N·m; here its four walls are fixed bodies, and a caller that wants the tumble calls
+/// spinFixedBodies(world, (0, kTumblerPivotHeight), kTumblerAngularVelocity) before each step.
+/// (v3's four wall boxes overlap near the corners; here the bottom and top walls run the full
+/// outside width, 21 m, and the side walls fit between them: the same inside, with no overlap.)
+/// Body order: bottom, right, top and left walls, then the boxes row by row from the bottom, left
+/// to right. Precondition: gridCount ≥ 0.
+World makeTumbler(int gridCount = 45, const SceneOptions& options = {});
+
+/// Box2D v3's "joint grid": `size` × `size` discs of radius 0.4 m, disc (k, i) centred at
+/// (k, −i) m, each pinned to its neighbour above and its neighbour on the left by pin joints
+/// halfway between their centres, so that the grid hangs from the 7 discs of the top row nearest
+/// its middle (k from size/2 − 3 to size/2 + 3), which are fixed. Unlike v3, whose discs never
+/// collide (a collision filter), these discs collide with each other: Impetus has no collision
+/// filter, so the benchmark has every engine collide them.
+/// Body order: column by column from the left (k), each from the top down (i). Joint order: for
+/// each disc in body order, the pin to the disc above (i > 0), then the pin to the disc on the
+/// left (k > 0). Precondition: size ≥ 0.
+World makeJointGrid(int size = 100, const SceneOptions& options = {});
 
 /// A Newton's cradle without strings: `balls` discs of radius 0.5 m touching in a row along the x
 /// axis (centres at x = 0, 1, 2, … m; y = 0), in zero gravity. Ball 0 (the leftmost) moves towards

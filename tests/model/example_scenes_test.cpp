@@ -1,6 +1,7 @@
 // The scene builders: body counts and order, bodies that start touching but never overlapping
-// (pyramid rows rest with a gap of exactly 0), valid random polygons, determinism, and the
-// rotation of fixed bodies that stands in for a kinematic container.
+// (pyramid rows rest with a gap of exactly 0), valid random polygons, Box2D v3's scenes as v3
+// lays them out, determinism, and the rotation of fixed bodies that stands in for a kinematic
+// container.
 
 #include "model/example_scenes.h"
 
@@ -400,6 +401,188 @@ TEST(ExampleScenes, SpinFixedBodiesGivesOnlyTheFixedOnesARigidRotation)
     }
 }
 
+// ---- Box2D v3's scenes ------------------------------------------------------------------------------
+
+/// The wall of the smash lies on a 0.4 m grid, and 0.4 is not exact in binary: neighbours that
+/// touch may come out a few ulps of 30 m (about 1e-14 m) apart or into each other.
+constexpr Scalar kGridRounding = 1e-12;
+
+TEST(ExampleScenes, SmashSendsADenseBlockIntoAWallOfTouchingBoxes)
+{
+    const int columns = 120;
+    const int rows = 80;
+    const World world = makeSmash(columns, rows);
+    ASSERT_EQ(world.bodies.size(), 1u + columns * rows);
+    EXPECT_EQ(countFixed(world), 0u);
+    EXPECT_EQ(world.settings.gravity, Vec2::Zero());
+    const Body& block = world.bodies[0];
+    EXPECT_EQ(std::get<Box>(block.shape), (Box{8, 8}));
+    EXPECT_EQ(block.mass, 8 * 64); // 64 m² at 8 kg/m²
+    EXPECT_EQ(block.state.velocity, Vec2(40, 0));
+    EXPECT_EQ(block.state.position, Vec2(-20, 0));
+    const WorldShape front = worldShape(block);
+    for (std::size_t i = 1; i < world.bodies.size(); ++i) {
+        const Body& box = world.bodies[i];
+        EXPECT_EQ(std::get<Box>(box.shape), (Box{0.4, 0.4}));
+        EXPECT_NEAR(box.mass, 0.16, 1e-15);
+        EXPECT_EQ(box.state.velocity, Vec2::Zero());
+        EXPECT_GE(worldShape(box).lower.x(), 29.8 - kGridRounding);
+    }
+    // The block's front face meets the wall after (29.8 − (−16)) m / 40 m/s, about 1.15 s.
+    EXPECT_NEAR((29.8 - front.upper.x()) / 40, 1.145, 1e-12);
+    // The wall's boxes touch their neighbours and overlap none.
+    std::size_t touching = 0;
+    for (const Contact& contact : closePairs(world)) {
+        ASSERT_GE(contact.separation, -kGridRounding)
+            << world.bodies[contact.a].name << " overlaps " << world.bodies[contact.b].name;
+        if (std::abs(contact.separation) <= kGridRounding)
+            ++touching;
+    }
+    // Every pair of side or top neighbours touches: (columns − 1)·rows + columns·(rows − 1).
+    EXPECT_GE(touching, static_cast<std::size_t>((columns - 1) * rows + columns * (rows - 1)));
+}
+
+TEST(ExampleScenes, SpinnerStirsItsBodiesInsideAClosedRing)
+{
+    const int count = 6076;
+    const World world = makeSpinner(count);
+    const std::size_t ring = 360;
+    ASSERT_EQ(world.bodies.size(), ring + 1 + count);
+    EXPECT_EQ(countFixed(world), ring + 1);
+    const Vec2 centre(0, 32);
+
+    // The ring: 360 blocks whose inner faces are chords of the 40 m circle, each touching the
+    // next (the last touches the first), none rotating.
+    for (std::size_t i = 0; i < ring; ++i) {
+        const Body& block = world.bodies[i];
+        ASSERT_TRUE(block.fixed);
+        EXPECT_EQ(block.state.angularVelocity, 0);
+        ASSERT_EQ(block.geometry.convexPieces.size(), 1u);
+        const std::vector<Vec2>& piece = block.geometry.convexPieces[0];
+        ASSERT_EQ(piece.size(), 4u);
+        Scalar nearest = std::numeric_limits<Scalar>::infinity();
+        for (const Vec2& v : piece)
+            nearest = std::min(nearest, (block.worldPoint(v) - centre).norm());
+        EXPECT_NEAR(nearest, 40, 1e-12) << block.name;
+        const Scalar gap = separation(worldShape(block), worldShape(world.bodies[(i + 1) % ring]));
+        EXPECT_NEAR(gap, 0, 1e-12) << block.name;
+        EXPECT_EQ(block.material.friction, 0.1);
+    }
+
+    // The arm: fixed, frictionless, turning about its own centre at 5 rad/s.
+    const Body& arm = world.bodies[ring];
+    EXPECT_TRUE(arm.fixed);
+    EXPECT_EQ(arm.state.position, Vec2(0, 12));
+    EXPECT_EQ(arm.state.velocity, Vec2::Zero());
+    EXPECT_EQ(arm.state.angularVelocity, kSpinnerAngularVelocity);
+    EXPECT_EQ(arm.material.friction, 0);
+    EXPECT_EQ(std::get<Box>(arm.shape), (Box{1.2, 40.4}));
+
+    // The bodies: capsule, circle, square in turn, 0.25 kg/m², all inside the ring.
+    for (std::size_t n = 0; n < static_cast<std::size_t>(count); ++n) {
+        const Body& body = world.bodies[ring + 1 + n];
+        EXPECT_FALSE(body.fixed);
+        EXPECT_EQ(body.density(), 0.25);
+        EXPECT_NEAR(body.mass, 0.25 * body.area, 1e-15);
+        EXPECT_EQ(body.material.friction, 0.1);
+        EXPECT_EQ(body.material.restitution, 0.1);
+        switch (n % 3) {
+        case 0: {
+            const std::vector<Vec2>& octagon = std::get<Polygon>(body.shape).vertices;
+            ASSERT_EQ(octagon.size(), 8u) << "Box2D takes at most 8 vertices";
+            EXPECT_TRUE(isConvex(octagon));
+            // Inscribed in the capsule: every vertex 0.25 m from the segment (−0.25, 0)–(0.25, 0).
+            for (const Vec2& v : octagon) {
+                const Vec2 nearest(std::clamp(v.x(), -0.25, 0.25), 0);
+                EXPECT_NEAR((v - nearest).norm(), 0.25, 1e-15);
+            }
+            break;
+        }
+        case 1:
+            EXPECT_EQ(std::get<Circle>(body.shape).radius, 0.35);
+            break;
+        default:
+            EXPECT_EQ(std::get<Box>(body.shape), (Box{0.7, 0.7}));
+        }
+        const WorldShape shape = worldShape(body);
+        for (const Vec2& corner : {shape.lower, shape.upper, Vec2(shape.lower.x(), shape.upper.y()),
+                                   Vec2(shape.upper.x(), shape.lower.y())})
+            EXPECT_LT((corner - centre).norm(), 40) << body.name;
+    }
+    // v3's grid: 92 to a row from (−23, 2) m on a 0.5 m pitch (a capsule's centroid lies on its
+    // grid point up to rounding).
+    EXPECT_NEAR((world.bodies[ring + 1].state.position - Vec2(-23, 2)).norm(), 0, 1e-15);
+    EXPECT_EQ(world.bodies[ring + 1 + 91].state.position, Vec2(22.5, 2));
+    EXPECT_EQ(world.bodies[ring + 1 + 92].state.position, Vec2(-23, 2.5));
+}
+
+TEST(ExampleScenes, TumblerHoldsItsBoxesInsideFourWallsAroundThePivot)
+{
+    const int gridCount = 45;
+    const World world = makeTumbler(gridCount);
+    ASSERT_EQ(world.bodies.size(), 4u + gridCount * gridCount);
+    EXPECT_EQ(countFixed(world), 4u);
+    const Vec2 pivot(0, kTumblerPivotHeight);
+    Vec2 insideLower = Vec2::Constant(-std::numeric_limits<Scalar>::infinity());
+    Vec2 insideUpper = -insideLower;
+    for (std::size_t i = 0; i < 4; ++i) {
+        ASSERT_TRUE(world.bodies[i].fixed);
+        const WorldShape wall = worldShape(world.bodies[i]);
+        if (wall.upper.y() < pivot.y())
+            insideLower.y() = wall.upper.y();
+        else if (wall.lower.y() > pivot.y())
+            insideUpper.y() = wall.lower.y();
+        else if (wall.upper.x() < 0)
+            insideLower.x() = wall.upper.x();
+        else
+            insideUpper.x() = wall.lower.x();
+    }
+    // v3's container: 19 m inside, centred on the pivot.
+    EXPECT_EQ(insideLower, Vec2(pivot - Vec2(9.5, 9.5)));
+    EXPECT_EQ(insideUpper, Vec2(pivot + Vec2(9.5, 9.5)));
+    for (std::size_t i = 4; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        ASSERT_EQ(std::get<Box>(body.shape), (Box{0.25, 0.25}));
+        const WorldShape box = worldShape(body);
+        EXPECT_GT(box.lower.x(), insideLower.x());
+        EXPECT_GT(box.lower.y(), insideLower.y());
+        EXPECT_LT(box.upper.x(), insideUpper.x());
+        EXPECT_LT(box.upper.y(), insideUpper.y());
+    }
+    EXPECT_NEAR((world.bodies[4].state.position - Vec2(-9, 1)).norm(), 0, 1e-14);
+    expectNoOverlap(world);
+}
+
+TEST(ExampleScenes, JointGridHangsFromSevenFixedDiscsByPinsBetweenNeighbours)
+{
+    const int size = 100;
+    const World world = makeJointGrid(size);
+    ASSERT_EQ(world.bodies.size(), static_cast<std::size_t>(size * size));
+    ASSERT_EQ(world.joints.size(), static_cast<std::size_t>(2 * size * (size - 1)));
+    EXPECT_EQ(countFixed(world), 7u);
+    for (int k = 0; k < size; ++k) {
+        for (int i = 0; i < size; ++i) {
+            const Body& disc = world.bodies[static_cast<std::size_t>(k * size + i)];
+            EXPECT_EQ(disc.state.position, Vec2(k, -i));
+            EXPECT_EQ(std::get<Circle>(disc.shape).radius, 0.4);
+            EXPECT_EQ(disc.fixed, i == 0 && k >= 47 && k <= 53) << disc.name;
+        }
+    }
+    for (const Joint& joint : world.joints) {
+        EXPECT_EQ(joint.type, JointType::Pin);
+        ASSERT_TRUE(joint.bodyB.has_value());
+        const Body& a = world.body(joint.bodyA);
+        const Body& b = world.body(*joint.bodyB);
+        // Neighbours, pinned halfway between their centres, and both anchors on that point.
+        EXPECT_EQ((b.state.position - a.state.position).norm(), 1);
+        EXPECT_EQ(joint.worldAnchor, Vec2((a.state.position + b.state.position) / 2));
+        EXPECT_EQ(a.worldPoint(joint.anchorA), joint.worldAnchor);
+        EXPECT_EQ(b.worldPoint(joint.anchorB), joint.worldAnchor);
+        EXPECT_LT(joint.bodyA, *joint.bodyB);
+    }
+    expectNoOverlap(world);
+}
+
 // ---- Small scenes --------------------------------------------------------------------------------
 
 TEST(ExampleScenes, NewtonsCradleBallsTouchInARowAndTheFirstMoves)
@@ -442,10 +625,15 @@ TEST(ExampleScenes, OptionsReachEveryBodyAndTheWorld)
     const SceneOptions options{.friction = 0.3, .restitution = 0.2, .timeStep = 1.0 / 60};
     for (const World& world : {makePyramid(5, options), makePyramidGrid(2, 2, 3, options),
                                makePolygonRain(20, 1, options), makeRotatingBoxWithCircles(20, options),
-                               makeNewtonsCradle(3, 1, options), makeBoxStack(3, options)}) {
+                               makeSmash(3, 2, options), makeSpinner(20, options), makeTumbler(4, options),
+                               makeJointGrid(8, options), makeNewtonsCradle(3, 1, options),
+                               makeBoxStack(3, options)}) {
         EXPECT_EQ(world.settings.timeStep, 1.0 / 60);
         for (const Body& body : world.bodies) {
-            EXPECT_EQ(body.material.friction, 0.3) << body.name;
+            // The spinner's arm is frictionless whatever the options say (as in Box2D v3).
+            if (body.name != "arm") {
+                EXPECT_EQ(body.material.friction, 0.3) << body.name;
+            }
             EXPECT_EQ(body.material.restitution, 0.2) << body.name;
         }
     }
@@ -457,13 +645,18 @@ TEST(ExampleScenes, BuildersAreDeterministic)
     EXPECT_EQ(makePyramidGrid(3, 2, 5), makePyramidGrid(3, 2, 5));
     EXPECT_EQ(makePolygonRain(300, 42), makePolygonRain(300, 42));
     EXPECT_EQ(makeRotatingBoxWithCircles(300), makeRotatingBoxWithCircles(300));
+    EXPECT_EQ(makeSmash(10, 8), makeSmash(10, 8));
+    EXPECT_EQ(makeSpinner(200), makeSpinner(200));
+    EXPECT_EQ(makeTumbler(10), makeTumbler(10));
+    EXPECT_EQ(makeJointGrid(10), makeJointGrid(10));
     EXPECT_EQ(makeNewtonsCradle(), makeNewtonsCradle());
     EXPECT_EQ(makeBoxStack(), makeBoxStack());
 }
 
 TEST(ExampleScenes, BodyNamesAreUnique)
 {
-    for (const World& world : {makePyramidGrid(3, 2, 4), makePolygonRain(50, 1), makeRotatingBoxWithCircles(50)}) {
+    for (const World& world : {makePyramidGrid(3, 2, 4), makePolygonRain(50, 1), makeRotatingBoxWithCircles(50),
+                               makeSmash(4, 3), makeSpinner(50), makeTumbler(5), makeJointGrid(6)}) {
         std::vector<std::string> names;
         for (const Body& body : world.bodies) {
             EXPECT_FALSE(body.name.empty());
