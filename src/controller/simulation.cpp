@@ -119,6 +119,7 @@ void Simulation::setUpSolverBodies(const model::World& world)
 void Simulation::collide(const model::World& world, Scalar h)
 {
     const Clock::time_point broadStart = Clock::now();
+    ++m_profile.collisionPasses;
     const std::size_t n = world.bodies.size();
     // Each body's speculative margin: how far its surface can move in one step (translation,
     // rotation at its bounding radius, and what its acceleration adds), plus a constant margin so
@@ -411,23 +412,34 @@ int Simulation::substepsFor(model::World& world, bool& collided)
     // integrated over the step the user chose, so that a lesson on integrators sees their error
     // at that step; a world with contacts is split, and finds its contacts again per substep.
     startAndCollide(world, h);
+    collided = true;
     const bool contacts = std::any_of(m_manifolds.begin(), m_manifolds.end(),
                                       [](const ContactSolver::PairManifold& pm) { return pm.manifold.count > 0; });
-    collided = !contacts;
     return contacts ? split : 1;
 }
 
-void Simulation::substep(model::World& world, Scalar h, Scalar endTime, bool collided)
+void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endTime, Contacts contacts,
+                         bool handOver)
 {
     const std::size_t total = stateCount(world);
 
-    // Phases 0 and 1: the start of the step and its collisions (startAndCollide).
-    if (!collided)
-        startAndCollide(world, h);
+    // Phases 0 and 1: the start of the step and its collisions (startAndCollide). A later substep
+    // of a step that found its contacts for the whole step only takes the start states afresh.
+    const bool reuse = contacts == Contacts::Reuse;
+    if (contacts == Contacts::Find || contacts == Contacts::FindForStep) {
+        startAndCollide(world, contacts == Contacts::FindForStep ? step : h);
+    } else if (reuse) {
+        gatherStates(world, m_startStates, bodyTasks(world));
+        setUpSolverBodies(world);
+        computeDerivatives(world, m_startStates, m_startDerivatives, m_forceScratch);
+    }
 
     // Phase 2: impacts, on the velocities from before this step's forces.
     const Clock::time_point solveStart = Clock::now();
-    m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives, h);
+    if (reuse)
+        m_contactSolver.refresh(m_bodies, m_startDerivatives, h);
+    else
+        m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives, h);
     m_jointSolver.prepare(world, m_bodies);
     m_profile.prepareMs += millisecondsSince(solveStart);
     const Clock::time_point impactsStart = Clock::now();
@@ -501,8 +513,13 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime, bool col
     solveMs += millisecondsSince(velocityStart);
     m_profile.solveMs += solveMs;
 
-    // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start).
+    // Phase 6: the clock, then what the contacts mean (colliding flags, events, warm start). The
+    // substeps that reuse one step's contacts keep them in the solver until the step's end: the
+    // next substep refreshes them, and a contact that began in any of them is told once.
     world.time = endTime;
+    m_jointSolver.storeImpulses(world);
+    if (!handOver)
+        return;
     const Clock::time_point eventsStart = Clock::now();
     // The last step's records move aside, and the solver's records of this step take their place
     // (ContactSolver::finishVelocities wrote them): three buffers take turns, so a large world's
@@ -511,7 +528,6 @@ void Simulation::substep(model::World& world, Scalar h, Scalar endTime, bool col
     m_contactSolver.swapRecords(world.contacts);
     updateCollisionState(world, m_contactSolver, m_bodies, m_previousContacts, m_collisionScratch, m_events, m_tasks.get());
     m_profile.eventsMs += millisecondsSince(eventsStart);
-    m_jointSolver.storeImpulses(world);
 }
 
 void Simulation::step(model::World& world)
@@ -527,10 +543,20 @@ void Simulation::step(model::World& world)
     const int substeps = substepsFor(world, collided);
     m_profile.substeps = substeps;
     const Scalar startTime = world.time;
+    // A split step of a rigid world finds its contacts once, with margins for the whole step, and
+    // its later substeps refresh them (ContactSolver::refresh): one collision pass and one build a
+    // step, as Box2D v3 does. A soft body's ellipses move too far against each other within a
+    // step for that, so a world with soft bodies finds them again every substep.
+    const bool reuse = substeps > 1 && world.softBodies.empty();
     for (int k = 1; k <= substeps; ++k) {
         // The last substep lands exactly on t + h, whatever the rounding of h/substeps.
         const Scalar endTime = k == substeps ? startTime + h : startTime + k * (h / substeps);
-        substep(world, h / substeps, endTime, collided);
+        Contacts contacts = reuse ? (k == 1 ? Contacts::FindForStep : Contacts::Reuse) : Contacts::Find;
+        // substepsFor's collision pass used the whole step's margins: what a single substep or
+        // the first of a reusing step needs.
+        if (k == 1 && collided && (reuse || substeps == 1))
+            contacts = Contacts::Found;
+        substep(world, h / substeps, h, endTime, contacts, !reuse || k == substeps);
     }
     ++world.stepCount;
     for (model::Joint& joint : world.joints) {

@@ -35,6 +35,9 @@ struct StepProfile {
     int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
     int impacts = 0; ///< impacts resolved
     int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
+    /// Collision passes (broad and narrow phase) the step ran: one for a rigid world however many
+    /// substeps it takes; one per substep with soft bodies.
+    int collisionPasses = 0;
 };
 
 /// Iteration counts of the constraint solvers.
@@ -87,18 +90,25 @@ private:
     enum class Entry : std::uint8_t { Rigid, Fixed, SoftOwner, Ellipse };
 
     Integrator& integratorFor(model::IntegratorKind kind);
-    /// One pass of every phase over h seconds, ending at simulated time endTime. `collided`: the
-    /// start of the step has already been set up and its collisions found for this h
-    /// (startAndCollide), so phases 0 and 1 are skipped.
-    void substep(model::World& world, Scalar h, Scalar endTime, bool collided = false);
+    /// How a substep finds its contacts.
+    enum class Contacts : std::uint8_t {
+        Find, ///< phases 0 and 1 afresh, with margins for the substep
+        FindForStep, ///< phases 0 and 1 with margins for the whole step, which later substeps reuse
+        Found, ///< startAndCollide has run for this substep already (substepsFor)
+        Reuse, ///< the start states afresh, and the step's constraints refreshed (ContactSolver::refresh)
+    };
+    /// One pass of every phase over h seconds of a step of `step` seconds, ending at simulated time
+    /// endTime. `handOver`: the substep hands its contacts to the world and tells what began (a
+    /// step whose substeps reuse its contacts does so once, at its last).
+    void substep(model::World& world, Scalar h, Scalar step, Scalar endTime, Contacts contacts, bool handOver);
     /// Phases 0 and 1 of a step of h seconds: the start states, the solver bodies, the smooth
     /// forces' derivatives, and the contacts found with speculative margins for h.
     void startAndCollide(const model::World& world, Scalar h);
     /// The substeps this step of `world` takes (docs/physics.md, "Time step and substeps"): what
     /// its soft grids need, and for a step longer than the solver's longest, solverSubsteps
     /// when the step has contacts or joints to solve (or the last step ended with contacts). A world with neither runs its integrator
-    /// over the whole step, as the user chose it; `collided` tells that this function found so by
-    /// running startAndCollide for the whole step, which the step then uses.
+    /// over the whole step, as the user chose it; `collided` tells that this function ran
+    /// startAndCollide for the whole step, which the step's first substep can then use.
     int substepsFor(model::World& world, bool& collided);
     void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -49,6 +50,9 @@ struct StepCase {
     Scalar h;
     const char* name;
 };
+
+/// Names the step in a failure message (GoogleTest otherwise prints the case's bytes).
+void PrintTo(const StepCase& step, std::ostream* out) { *out << step.name; }
 
 class AnyStep : public ::testing::TestWithParam<StepCase> {
 protected:
@@ -215,6 +219,38 @@ TEST_P(AnyStep, BounceApexesFollowESquaredToTheN)
         const Scalar expected = std::pow(e, 2.0 * static_cast<double>(n));
         EXPECT_NEAR(apexes[n], expected, 0.005 * expected) << "bounce " << n;
     }
+    // Each bounce is one contact that begins, also when a step's substeps share its contacts and
+    // tell what began once, at the step's end.
+    EXPECT_EQ(world.bodies[1].collisionCount, 4);
+}
+
+// A ball rolling without slipping on level ground stays on it: it neither sinks nor hops, and
+// keeps v = −ω·r. Within a long step the ball turns a long way (0.67 rad a step at 1/30 s); the
+// point of it that touches the ground is the lowest one, not the one that touched at the start of
+// the step, which has rolled up by r·(1 − cos Δθ), 5 cm at 1/30 s.
+TEST_P(AnyStep, BallRollsOnTheGroundWithoutSinking)
+{
+    const Scalar r = 0.25;
+    const Scalar v = 5.0;
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, h(), Vec2(0, -kG));
+    world.bodies.push_back(withMaterial(makeGround("ground", 40, 1), 0.0, 0.5));
+    model::Body ball = withMaterial(makeBall("ball", 1.0, r, Vec2(-8, r), Vec2(v, 0)), 0.0, 0.5);
+    ball.state.angularVelocity = -v / r;
+    world.bodies.push_back(ball);
+    Simulation simulation(settingsUnderTest());
+    Scalar lowest = r;
+    Scalar highest = r;
+    for (int i = stepsFor(world, 2.0); i > 0; --i) {
+        simulation.step(world);
+        lowest = std::min(lowest, world.bodies[1].state.position.y());
+        highest = std::max(highest, world.bodies[1].state.position.y());
+    }
+    const model::BodyState& s = world.bodies[1].state;
+    EXPECT_GT(lowest, r - 2 * constants::kLinearSlop);
+    EXPECT_LT(highest, r + constants::kLinearSlop);
+    EXPECT_NEAR(s.velocity.x(), v, 1e-6);
+    EXPECT_NEAR(s.angularVelocity * r, -v, 1e-6);
+    EXPECT_NEAR(s.position.x(), -8 + 2 * v, 1e-6);
 }
 
 // Newton's cradle: one ball in at 2 m/s, one ball out at 2 m/s, the other four at rest.
@@ -341,6 +377,33 @@ TEST_P(AnyStep, ZeroGravityPileConservesMomentumAndNeverGainsEnergy)
 // not split (the solver at its worst), no step resolves more impacts than a hundredth of its
 // contacts (a handful, where the rows' side contacts meet), and split as it is by default, it
 // takes 4 substeps a step and as few impacts.
+// A long step of a rigid world finds its contacts once, with margins for the whole step, and its
+// substeps refresh them: one collision pass a step, not one per substep. A world with a soft body
+// finds them again every substep.
+TEST(AnyStepWork, ASplitStepOfARigidWorldRunsOneCollisionPass)
+{
+    model::World world = model::makePyramid(20);
+    world.settings.timeStep = 1.0 / 60.0;
+    Simulation simulation(settingsUnderTest());
+    for (int i = 0; i < 30; ++i) {
+        simulation.step(world);
+        ASSERT_EQ(simulation.profile().substeps, 4) << "step " << i;
+        ASSERT_EQ(simulation.profile().collisionPasses, 1) << "step " << i;
+    }
+    EXPECT_GT(simulation.profile().contacts, 0);
+
+    model::World soft = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 60.0, Vec2(0, -kG));
+    soft.bodies.push_back(makeGround("floor", 10, 1));
+    model::Body box = makeBox("jelly", 1.0, 0.5, 0.5, Vec2(0, 0.26));
+    box.soft = model::SoftSettings{};
+    soft.bodies.push_back(box);
+    Simulation softSimulation(settingsUnderTest());
+    softSimulation.step(soft);
+    softSimulation.step(soft);
+    EXPECT_GE(softSimulation.profile().substeps, 4);
+    EXPECT_EQ(softSimulation.profile().collisionPasses, softSimulation.profile().substeps);
+}
+
 TEST(AnyStepWork, TallPyramidAtALongStepStrikesNoCascadeOfImpacts)
 {
     model::SceneOptions options;

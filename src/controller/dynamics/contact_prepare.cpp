@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <variant>
 
 namespace impetus::controller {
 
@@ -26,6 +27,16 @@ Vec2 intoFrame(const Vec2& v, const Vec2& rotation)
     const Scalar c = rotation.x();
     const Scalar s = -rotation.y();
     return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+/// The radius of a rigid circle body, or 0 for any other shape and for a soft body's ellipse
+/// (whose solver body is not its owner), m.
+Scalar circleRadius(const model::World& world, std::uint32_t solverBody, std::uint32_t owner)
+{
+    if (solverBody != owner)
+        return 0;
+    const model::Circle* circle = std::get_if<model::Circle>(&world.bodies[owner].shape);
+    return circle ? circle->radius : 0;
 }
 
 /// Identifies a pair of pieces; lexicographic order is the broad phase's pair order.
@@ -173,6 +184,8 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         c.friction = mixFriction(a.friction, b.friction);
         c.restitution = mixRestitution(a.restitution, b.restitution);
         c.localNormalA = intoFrame(c.normal, m_rotations[c.bodyA]);
+        c.roundA = circleRadius(world, c.bodyA, c.ownerA);
+        c.roundB = circleRadius(world, c.bodyB, c.ownerB);
 
         const model::ContactRecord* match = m_previousOf[index] == kNoRecord ? nullptr : &previous[m_previousOf[index]];
 

@@ -72,6 +72,10 @@ struct ContactConstraint {
     std::array<ContactConstraintPoint, 2> points{};
     /// Two points whose 2×2 effective-mass matrix is well conditioned, solved together.
     bool blockSolve = false;
+    /// The radius of piece A (B) when it is a rigid circle, else 0, m. A circle's surface point
+    /// facing the other piece does not turn with the circle: refresh() puts it back on the normal.
+    Scalar roundA = 0;
+    Scalar roundB = 0;
 };
 
 /// Mixing rule for two materials in contact: e = max(eA, eB), the bouncier surface wins, as when
@@ -128,6 +132,17 @@ public:
     /// bodies, then soft-grid ellipses: force_model.h, stateCount).
     void prepare(const model::World& world, std::span<const PairManifold> manifolds, std::span<SolverBody> bodies,
                  std::span<const BodyDerivative> derivatives, Scalar h);
+
+    /// Brings this step's constraints up to date for a later substep of length h (s), without a
+    /// new collision pass or a new build: `bodies` and `derivatives` are those at the start of that
+    /// substep. Each point's separation is measured again at the bodies' present poses, from the
+    /// surface points and the normal that prepare() fixed in the bodies' frames (a circle's
+    /// surface point and normal are put back on the line of contact); its approach velocity and
+    /// acceleration are taken afresh, for the impacts; and the accumulated impulses that the last
+    /// substep's passes ended with are the warm start. The normal, the lever arms and the masses
+    /// stay those of prepare(), as over one step of Box2D v3's substeps. See docs/physics.md,
+    /// "Time step and substeps".
+    void refresh(std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h);
 
     /// Resolves the impacts of this step, in order of approach speed, on `bodies` (which hold the
     /// velocities from before this step's forces). Records each body's impact data. Returns the
@@ -191,6 +206,9 @@ private:
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                           std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                           std::span<const std::uint32_t> indices, Scalar h, std::size_t part);
+    /// refresh() for constraint `index` of group `part`.
+    void refreshConstraint(std::uint32_t index, std::span<SolverBody> bodies,
+                           std::span<const BodyDerivative> derivatives, Scalar h, std::size_t part);
     /// Fills m_rotations with every body's (cos, sin) of its angle.
     void computeRotations(std::span<const SolverBody> bodies, bool split);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when

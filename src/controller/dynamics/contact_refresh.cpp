@@ -1,0 +1,111 @@
+// ContactSolver, phase 1b: a step's constraints brought up to date for its later substeps. A step
+// longer than the solver's longest substep finds its contacts and builds its constraints once, with
+// margins for the whole step; each later substep only measures the gaps again at the bodies' new
+// poses (docs/physics.md, "Time step and substeps").
+
+#include "controller/dynamics/contact_solver.h"
+#include "controller/dynamics/contact_solver_detail.h"
+
+#include "controller/transform.h"
+#include "model/constants.h"
+
+#include <algorithm>
+
+namespace impetus::controller {
+
+using detail::fastestApproach;
+
+void ContactSolver::refresh(std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
+{
+    computeRotations(bodies, m_split);
+    runGroups([&](int g) {
+        const auto part = static_cast<std::size_t>(g);
+        m_preparedCandidates[part].clear();
+        for (const std::uint32_t index : m_groups[part])
+            refreshConstraint(index, bodies, derivatives, h, part);
+    });
+}
+
+void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody> bodies,
+                                      std::span<const BodyDerivative> derivatives, Scalar h, std::size_t part)
+{
+    ContactConstraint& c = m_constraints[index];
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    const Vec2& rotationA = m_rotations[c.bodyA];
+    const Vec2& rotationB = m_rotations[c.bodyB];
+    const Transform frameA{a.position, rotationA.x(), rotationA.y()};
+    const Transform frameB{b.position, rotationB.x(), rotationB.y()};
+
+    // The normal turns with A's face, as the position passes see it. A circle has no face: the
+    // line of contact stays the line the other piece's face or centre gives. Two circles meet on
+    // the line through their centres; a circle A against a polygon keeps prepare()'s normal, now
+    // written afresh into A's turned frame.
+    const bool round = c.roundA > 0 || c.roundB > 0;
+    Vec2 n = frameA.rotate(c.localNormalA);
+    if (c.roundA > 0) {
+        n = c.normal;
+        if (c.roundB > 0) {
+            const Vec2 between = b.position - a.position;
+            const Scalar length = between.norm();
+            if (length > 0)
+                n = between / length;
+        }
+        c.localNormalA = frameA.inverseRotate(n);
+    }
+
+    const model::ContactRecord& record = m_records[index];
+    const BodyDerivative& da = derivatives[c.bodyA];
+    const BodyDerivative& db = derivatives[c.bodyB];
+    bool loaded = false;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+        ContactConstraintPoint& p = c.points[i];
+        // A circle's surface point is the one on the line of contact, whichever way it has rolled.
+        if (c.roundA > 0)
+            p.localAnchorA = frameA.inverseRotate(Vec2(c.roundA * n));
+        if (c.roundB > 0)
+            p.localAnchorB = frameB.inverseRotate(Vec2(-c.roundB * n));
+        p.separation = (frameB.apply(p.localAnchorB) - frameA.apply(p.localAnchorA)).dot(n);
+        const Vec2 accA = da.acceleration + cross(da.angularAcceleration, p.rA);
+        const Vec2 accB = db.acceleration + cross(db.angularAcceleration, p.rB);
+        p.normalAcceleration = (accB - accA).dot(c.normal);
+        p.startNormalVelocity = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
+        // The last substep's passes ended with these (finishVelocities wrote them to the record).
+        p.normalImpulse = record.normalImpulses[i];
+        p.tangentImpulse = record.tangentImpulses[i];
+        loaded = loaded || p.normalImpulse > 0;
+    }
+    // As in prepare(): a contact that carried load in the last substep is resting as a whole.
+    for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i)
+        c.points[i].carriesLoad = loaded;
+
+    if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
+        m_preparedCandidates[part].push_back({*fastest, index, 0});
+    if (!m_batched)
+        return; // warmStart() packs the velocity passes' data from the constraint
+
+    // A batched step keeps its lanes, whose accumulated impulses are already the last pass's: only
+    // the gaps change, and a circle's surface points and normal.
+    const std::uint32_t laneIndex = m_laneOf[index];
+    const std::size_t bi = laneIndex / kBatchLanes;
+    const auto lane = static_cast<int>(laneIndex % kBatchLanes);
+    ContactBatch& batch = m_batches[bi];
+    PositionBatch& positions = m_positionBatches[bi];
+    for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
+        const ContactConstraintPoint& p = c.points[i];
+        batch.points[i].gapSpeed[lane] = std::max(p.separation, 0.0) / h;
+        if (!round)
+            continue;
+        PositionBatch::Anchors& anchors = positions.anchors[i];
+        anchors.ax[lane] = p.localAnchorA.x();
+        anchors.ay[lane] = p.localAnchorA.y();
+        anchors.bx[lane] = p.localAnchorB.x();
+        anchors.by[lane] = p.localAnchorB.y();
+    }
+    if (round) {
+        positions.localNormalX[lane] = c.localNormalA.x();
+        positions.localNormalY[lane] = c.localNormalA.y();
+    }
+}
+
+} // namespace impetus::controller
