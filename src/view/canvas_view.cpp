@@ -11,6 +11,7 @@
 #include "view/spring_item.h"
 #include "view/tools/drag_shape_tools.h"
 #include "view/tools/joint_tool.h"
+#include "view/tools/measure_tools.h"
 #include "view/tools/polygon_tool.h"
 #include "view/tools/rotate_tool.h"
 #include "view/tools/select_tool.h"
@@ -145,6 +146,8 @@ void CanvasView::setDocument(SceneDocument& document)
     m_tools.push_back(std::make_unique<SpringTool>(document, *this));
     m_tools.push_back(std::make_unique<JointTool>(document, *this, model::JointType::Pin));
     m_tools.push_back(std::make_unique<JointTool>(document, *this, model::JointType::Rod));
+    m_tools.push_back(std::make_unique<RulerTool>(document, *this));
+    m_tools.push_back(std::make_unique<ProtractorTool>(document, *this));
     m_tool = m_tools.front().get();
     viewport()->setCursor(m_tool->cursorShape());
     connect(m_document, &SceneDocument::selectionChanged, this, &CanvasView::showSelection);

@@ -51,6 +51,9 @@ public:
     /// document must outlive the canvas.
     void setDocument(SceneDocument& document);
 
+    /// The runner whose world is shown.
+    const SimulationRunner& runner() const { return m_runner; }
+
     /// The body items, in the order of World::bodies.
     const std::vector<BodyItem*>& bodyItems() const { return m_bodyItems; }
 

@@ -261,6 +261,10 @@ void MainWindow::createToolActions()
         {ToolKind::Spring, tr("Spring"), Qt::Key_K, tr("Drag from a body to another body or to a point")},
         {ToolKind::Pin, tr("Pin"), Qt::Key_N, tr("Click on a body to hinge it to the body below or the world")},
         {ToolKind::Rod, tr("Rod"), Qt::Key_L, tr("Drag from a body to another body or to a point")},
+        {ToolKind::Ruler, tr("Ruler"), Qt::Key_M,
+         tr("Click two points, or drag: the distance in metres; snaps to body centres and corners")},
+        {ToolKind::Protractor, tr("Protractor"), Qt::Key_A,
+         tr("Click the vertex, then a point on each arm: the angle in degrees")},
     };
     m_toolGroup = new QActionGroup(this);
     m_toolGroup->setExclusive(true);

@@ -11,6 +11,7 @@
 #include "view/main_window.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
+#include "view/tools/measure_tools.h"
 #include "view/timeline.h"
 #include "view/view_constants.h"
 
@@ -22,6 +23,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QTest>
 
 #include <cmath>
@@ -97,6 +99,8 @@ private slots:
     void trailsHaveDotsAndFollowTheTimeline();
     void graphOfAFallingBodysVyHasSlopeMinusG();
     void graphExportsAPictureAndFollowsTheTimeline();
+    void rulerBetweenTwoClicksReadsTheDistance();
+    void protractorReadsTheAngle();
 
 private:
     static bool showActive(MainWindow& window);
@@ -316,6 +320,61 @@ void InstrumentsTest::graphExportsAPictureAndFollowsTheTimeline()
     // A file that cannot be written is a message, not a crash.
     const std::optional<QString> error = graph->exportCsv(dir.filePath(QStringLiteral("no/such/folder/x.csv")));
     QVERIFY(error.has_value());
+}
+
+void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    QTest::keyClick(viewport, Qt::Key_M);
+    QCOMPARE(canvas.toolKind(), impetus::view::ToolKind::Ruler);
+    auto* ruler = dynamic_cast<impetus::view::RulerTool*>(canvas.tool());
+    QVERIFY(ruler);
+    // Two clicks a few pixels off the ball's centre and the marker's top-right corner: the ends
+    // snap to them.
+    const QPoint near(3, -2);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint() + near);
+    QVERIFY(ruler->text().isEmpty()); // the end follows the cursor until the second click
+    QTest::mouseMove(viewport, canvas.toView(QPointF(1, 0.5)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(2.1, 1.1)).toPoint() - near);
+    QVERIFY(ruler->distance().has_value());
+    const double expected = std::hypot(2.1, 1.1);
+    QVERIFY(std::abs(*ruler->distance() - expected) < 1e-12);
+    QCOMPARE(ruler->text(), QStringLiteral("%1 m").arg(expected, 0, 'f', 3));
+    QCOMPARE(ruler->text(), QStringLiteral("2.371 m"));
+    // Measuring is not an edit.
+    QCOMPARE(window.document().undoStack()->count(), 0);
+    QTest::keyClick(viewport, Qt::Key_Escape);
+    QVERIFY(ruler->text().isEmpty());
+}
+
+void InstrumentsTest::protractorReadsTheAngle()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    QTest::keyClick(viewport, Qt::Key_A);
+    auto* protractor = dynamic_cast<impetus::view::ProtractorTool*>(canvas.tool());
+    QVERIFY(protractor);
+    // The vertex at the ball's centre, one arm to the marker's centre, one to a free point at
+    // (−1, 0.5) m: the angle between (2, 1) and (−1, 0.5).
+    const QPoint free = canvas.toView(QPointF(-1, 0.5)).toPoint();
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(2, 1)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, free);
+    QVERIFY(protractor->angleDegrees().has_value());
+    const QPointF armEnd = canvas.toScene(free);
+    const double cross = 2 * armEnd.y() - 1 * armEnd.x();
+    const double dot = 2 * armEnd.x() + 1 * armEnd.y();
+    const double expected = std::atan2(std::abs(cross), dot) * 180 / 3.14159265358979323846;
+    QVERIFY(std::abs(*protractor->angleDegrees() - expected) < 1e-9);
+    QVERIFY(std::abs(expected - 126.87) < 1); // about 126.9° at the pixel clicked
+    QCOMPARE(protractor->text(), QStringLiteral("%1°").arg(expected, 0, 'f', 1));
 }
 
 QTEST_MAIN(InstrumentsTest)
