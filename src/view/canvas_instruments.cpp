@@ -15,6 +15,13 @@ namespace impetus::view {
 
 namespace {
 
+/// An arrow's head takes at most this fraction of a short arrow, so that the shaft still shows.
+constexpr double kMaxHeadFraction = 0.6;
+/// The legend's sample arrows are this many head lengths long.
+constexpr double kSwatchHeads = 3;
+/// The legend's paper: white, slightly see-through so the grid shows it is an overlay.
+const QColor kLegendFill(255, 255, 255, 225);
+
 QPointF toPoint(const Vec2& v) { return QPointF(v.x(), v.y()); }
 
 /// An arrow from `from` to `to` (px) with a filled head, in `color`; drawn dashed when `clipped`.
@@ -30,7 +37,7 @@ void drawArrow(QPainter& painter, QPointF from, QPointF to, const QColor& color)
         to = line.p2();
         clipped = true;
     }
-    const double head = std::min(constants::kArrowHeadPx, 0.6 * line.length());
+    const double head = std::min(constants::kArrowHeadPx, kMaxHeadFraction * line.length());
     const QPointF unit = (to - from) / line.length();
     const QPointF normal(-unit.y(), unit.x());
     const QPointF base = to - head * unit;
@@ -168,6 +175,8 @@ void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
 {
     if (!m_trails)
         return;
+    const std::size_t most =
+        std::min(constants::kMaxTrailPoints, constants::kMaxTrailPointsInAll / std::max<std::size_t>(1, m_trailPoints.size()));
     for (const StepSample& sample : samples) {
         if (sample.centres.size() != m_trailPoints.size())
             continue; // recorded before a body came or went: it belongs to another scene
@@ -177,7 +186,7 @@ void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
             if (!points.empty() && points.back().step >= sample.step)
                 continue;
             points.push_back({sample.step, toPoint(sample.centres[i])});
-            if (points.size() > constants::kMaxTrailPoints)
+            if (points.size() > most)
                 points.pop_front();
         }
     }
@@ -336,7 +345,7 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     painter.setRenderHint(QPainter::Antialiasing);
     const QFontMetricsF metrics(painter.font());
     const double pad = constants::kLegendPaddingPx;
-    const double swatch = 3 * constants::kArrowHeadPx;
+    const double swatch = kSwatchHeads * constants::kArrowHeadPx;
     double width = 0;
     for (const QString& line : lines)
         width = std::max(width, metrics.horizontalAdvance(line));
@@ -344,7 +353,7 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     const QRectF box(viewport.left() + constants::kLegendMarginPx, viewport.top() + constants::kLegendMarginPx,
                      width + swatch + 3 * pad, lineHeight * static_cast<double>(lines.size()) + 2 * pad);
     painter.setPen(QPen(constants::kMinorGridColor.darker(), 1));
-    painter.setBrush(QColor(255, 255, 255, 225));
+    painter.setBrush(kLegendFill);
     painter.drawRect(box);
     for (qsizetype i = 0; i < lines.size(); ++i) {
         const double y = box.top() + pad + lineHeight * (static_cast<double>(i) + 0.5);

@@ -33,6 +33,19 @@ namespace impetus::view {
 
 namespace {
 
+/// The smallest chart that still reads, px.
+constexpr int kMinChartWidthPx = 240;
+constexpr int kMinChartHeightPx = 160;
+/// The marker of the state shown, px.
+constexpr double kMarkerSizePx = 9;
+/// Space around the chart and the panel's controls, px.
+constexpr int kMarginPx = 4;
+/// The axes reach this fraction of the data's span beyond it, so no point sits on the frame.
+constexpr double kRangeMarginFraction = 0.05;
+/// A constant quantity (a body at rest) gets an axis at least this far each side of its value,
+/// in its own unit.
+constexpr double kFlatRangeMargin = 0.5;
+
 /// A number as impetus-cli writes it: the shortest text that reads back to the same double.
 QString csvNumber(double value) { return QString::number(value, 'g', QLocale::FloatingPointShortest); }
 
@@ -54,7 +67,8 @@ std::pair<double, double> paddedRange(double low, double high)
         return {0, 1};
     // A constant (a body at rest) still gets an axis a unit wide around its value.
     const double span = high - low;
-    const double margin = span > 0 ? 0.05 * span : std::max(0.5, 0.05 * std::abs(low));
+    const double margin = span > 0 ? kRangeMarginFraction * span
+                                    : std::max(kFlatRangeMargin, kRangeMarginFraction * std::abs(low));
     return {low - margin, high + margin};
 }
 
@@ -90,7 +104,7 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
     m_readout->setAccessibleName(tr("Value under the cursor"));
     m_chartView->setObjectName(QStringLiteral("graphChartView"));
     m_chartView->setRenderHint(QPainter::Antialiasing);
-    m_chartView->setMinimumSize(240, 160);
+    m_chartView->setMinimumSize(kMinChartWidthPx, kMinChartHeightPx);
     m_chartView->viewport()->installEventFilter(this);
     m_chartView->viewport()->setMouseTracking(true);
     for (const GraphQuantity q : graphQuantities()) {
@@ -110,9 +124,9 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
         series->attachAxis(m_axisX);
         series->attachAxis(m_axisY);
     }
-    m_marker->setMarkerSize(9);
+    m_marker->setMarkerSize(kMarkerSizePx);
     m_marker->setColor(constants::kSelectionColor);
-    m_chart->setMargins(QMargins(4, 4, 4, 4));
+    m_chart->setMargins(QMargins(kMarginPx, kMarginPx, kMarginPx, kMarginPx));
 
     auto* exportCsv = new QPushButton(tr("Export CSV…"), this);
     exportCsv->setObjectName(QStringLiteral("graphExportCsv"));
@@ -133,7 +147,7 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
     bottom->addWidget(exportCsv);
     bottom->addWidget(exportPng);
     auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setContentsMargins(kMarginPx, kMarginPx, kMarginPx, kMarginPx);
     layout->addLayout(choices);
     layout->addWidget(m_chartView, 1);
     layout->addLayout(bottom);

@@ -58,6 +58,9 @@ constexpr qsizetype kMaxRecentFiles = 8;
 constexpr std::array<double, 7> kSpeeds = {0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 4.0};
 constexpr int kRealTimeSpeedIndex = 3;
 
+/// The choices of View › Trail Dots Every, steps: from every step to one a second at 240 Hz.
+constexpr std::array<int, 6> kTrailDotChoices = {1, 6, 12, 24, 60, 240};
+
 /// QSettings keys.
 const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("window/geometry");
@@ -394,7 +397,7 @@ void MainWindow::createInstrumentMenus(QMenu* viewMenu)
     QMenu* dots = viewMenu->addMenu(tr("Trail &Dots Every"));
     dots->setObjectName(QStringLiteral("trailDotsMenu"));
     auto* dotGroup = new QActionGroup(dots);
-    for (const int steps : {1, 6, 12, 24, 60, 240}) {
+    for (const int steps : kTrailDotChoices) {
         QAction* action = dots->addAction(tr("%n step(s)", nullptr, steps));
         action->setCheckable(true);
         action->setChecked(steps == constants::kDefaultTrailDotSteps);

@@ -18,6 +18,10 @@ namespace impetus::view {
 
 namespace {
 
+/// Space at the strip's left and right ends, px: the button sits at the edge, the label clear of it.
+constexpr int kLeftMarginPx = 4;
+constexpr int kRightMarginPx = 8;
+
 /// A step count as a slider value: sliders hold ints, and a run of 2³¹ steps (over 100 days at the
 /// default step) is beyond any lesson; beyond it the slider saturates.
 int sliderValue(std::int64_t step)
@@ -50,7 +54,7 @@ TimelineBar::TimelineBar(Timeline& timeline, const SimulationRunner& runner, QWi
     m_label->setAccessibleName(tr("Time shown"));
 
     auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(4, 0, 8, 0);
+    layout->setContentsMargins(kLeftMarginPx, 0, kRightMarginPx, 0);
     layout->addWidget(m_stepBack);
     layout->addWidget(m_slider, 1);
     layout->addWidget(m_label);

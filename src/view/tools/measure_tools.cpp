@@ -17,6 +17,13 @@ namespace impetus::view {
 
 namespace {
 
+/// The protractor's arc has a radius of this many arrow heads, px: clear of the vertex's snap.
+constexpr double kArcHeads = 3;
+/// The labels' paper: white, slightly see-through.
+const QColor kLabelFill(255, 255, 255, 230);
+/// Space between the ruler's two labels, px.
+constexpr double kLabelGapPx = 4;
+
 /// Draws `text` on a light box centred at the pixel point `at`.
 void drawLabel(QPainter& painter, const QPointF& at, const QString& text)
 {
@@ -25,7 +32,7 @@ void drawLabel(QPainter& painter, const QPointF& at, const QString& text)
     QRectF box(0, 0, metrics.horizontalAdvance(text) + 2 * pad, metrics.height() + pad);
     box.moveCenter(at);
     painter.setPen(QPen(constants::kMeasureColor, 1));
-    painter.setBrush(QColor(255, 255, 255, 230));
+    painter.setBrush(kLabelFill);
     painter.drawRect(box);
     painter.drawText(box, Qt::AlignCenter, text);
 }
@@ -150,7 +157,7 @@ void RulerTool::paintOverlay(QPainter& painter, double) const
                               .arg(m_end->x() - m_start->x(), 0, 'f', 3)
                               .arg(m_end->y() - m_start->y(), 0, 'f', 3);
     drawLabel(painter, (a + b) / 2, label);
-    drawLabel(painter, (a + b) / 2 + QPointF(0, QFontMetricsF(painter.font()).height() + 4), parts);
+    drawLabel(painter, (a + b) / 2 + QPointF(0, QFontMetricsF(painter.font()).height() + kLabelGapPx), parts);
     painter.restore();
 }
 
@@ -233,7 +240,7 @@ void ProtractorTool::paintOverlay(QPainter& painter, double) const
         double span = first.angleTo(second);
         if (span > 180)
             span -= 360;
-        const double radius = 3 * constants::kArrowHeadPx;
+        const double radius = kArcHeads * constants::kArrowHeadPx;
         painter.drawArc(QRectF(vertex - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)),
                         static_cast<int>(first.angle() * 16), static_cast<int>(span * 16));
         if (m_done)
