@@ -10,7 +10,7 @@ IMPETUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 IMPETUS_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
-  qt6-base-dev libqt6svg6 fonts-dejavu-core
+  qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 fonts-dejavu-core
 )
 
 impetus_install_packages() {

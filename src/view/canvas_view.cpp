@@ -3,6 +3,7 @@
 #include "controller/soft/soft_body_shape.h"
 
 #include "view/body_item.h"
+#include "view/canvas_instruments.h"
 #include "view/soft_detail_item.h"
 #include "view/joint_item.h"
 #include "view/scene_document.h"
@@ -10,6 +11,7 @@
 #include "view/spring_item.h"
 #include "view/tools/drag_shape_tools.h"
 #include "view/tools/joint_tool.h"
+#include "view/tools/measure_tools.h"
 #include "view/tools/polygon_tool.h"
 #include "view/tools/rotate_tool.h"
 #include "view/tools/select_tool.h"
@@ -98,6 +100,7 @@ CanvasView::CanvasView(const SimulationRunner& runner, QWidget* parent)
     : QGraphicsView(parent)
     , m_runner(runner)
     , m_scene(new QGraphicsScene(this))
+    , m_instruments(new CanvasInstruments(runner, this))
 {
     // Every item moves every frame, so a BSP index would be rebuilt constantly for nothing.
     m_scene->setItemIndexMethod(QGraphicsScene::NoIndex);
@@ -119,6 +122,11 @@ CanvasView::CanvasView(const SimulationRunner& runner, QWidget* parent)
     connect(&m_runner, &SimulationRunner::worldChanged, this, &CanvasView::rebuildItems);
     connect(&m_runner, &SimulationRunner::sceneReplaced, this, &CanvasView::frameScene);
     connect(&m_runner, &SimulationRunner::stepped, this, &CanvasView::syncItems);
+    connect(&m_runner, &SimulationRunner::sampled, m_instruments, &CanvasInstruments::addSamples);
+    connect(&m_runner, &SimulationRunner::stepped, m_instruments, &CanvasInstruments::refresh);
+    connect(&m_runner, &SimulationRunner::worldChanged, m_instruments, &CanvasInstruments::refresh);
+    connect(&m_runner, &SimulationRunner::sceneReplaced, m_instruments, &CanvasInstruments::clear);
+    connect(m_instruments, &CanvasInstruments::changed, viewport(), [this] { viewport()->update(); });
     rebuildItems();
     frameScene();
 }
@@ -138,9 +146,13 @@ void CanvasView::setDocument(SceneDocument& document)
     m_tools.push_back(std::make_unique<SpringTool>(document, *this));
     m_tools.push_back(std::make_unique<JointTool>(document, *this, model::JointType::Pin));
     m_tools.push_back(std::make_unique<JointTool>(document, *this, model::JointType::Rod));
+    m_tools.push_back(std::make_unique<RulerTool>(document, *this));
+    m_tools.push_back(std::make_unique<ProtractorTool>(document, *this));
     m_tool = m_tools.front().get();
     viewport()->setCursor(m_tool->cursorShape());
     connect(m_document, &SceneDocument::selectionChanged, this, &CanvasView::showSelection);
+    connect(m_document, &SceneDocument::selectionChanged, m_instruments,
+            [this] { m_instruments->setSelection(m_document->selection()); });
     connect(m_document, &SceneDocument::sceneReplaced, this, [this] {
         if (m_tool)
             m_tool->cancel();
@@ -595,11 +607,14 @@ void CanvasView::wheelEvent(QWheelEvent* event)
 
 void CanvasView::drawForeground(QPainter* painter, const QRectF&)
 {
-    if (!m_tool)
-        return;
-    painter->save();
-    m_tool->paintOverlay(*painter, pixelsPerMetre());
-    painter->restore();
+    // Arrows over the bodies, the tool's overlay over them, and the legend over everything.
+    m_instruments->paintVectors(*painter);
+    if (m_tool) {
+        painter->save();
+        m_tool->paintOverlay(*painter, pixelsPerMetre());
+        painter->restore();
+    }
+    m_instruments->paintLegend(*painter, QRectF(viewport()->rect()));
 }
 
 void CanvasView::drawBackground(QPainter* painter, const QRectF& rect)
@@ -643,6 +658,8 @@ void CanvasView::drawBackground(QPainter* painter, const QRectF& rect)
         drawGridLabels(painter, rect, grid.spacing, grid.linesPerMajor);
     }
     painter->restore();
+    // Trails lie on the paper, under the bodies that left them.
+    m_instruments->paintTrails(*painter);
 }
 
 void CanvasView::drawGridLabels(QPainter* painter, const QRectF& rect, double spacing, int linesPerMajor) const

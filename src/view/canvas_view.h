@@ -19,6 +19,7 @@ class QGraphicsScene;
 namespace impetus::view {
 
 class BodyItem;
+class CanvasInstruments;
 class JointItem;
 class SceneDocument;
 class SimulationRunner;
@@ -50,6 +51,9 @@ public:
     /// document must outlive the canvas.
     void setDocument(SceneDocument& document);
 
+    /// The runner whose world is shown.
+    const SimulationRunner& runner() const { return m_runner; }
+
     /// The body items, in the order of World::bodies.
     const std::vector<BodyItem*>& bodyItems() const { return m_bodyItems; }
 
@@ -66,6 +70,10 @@ public:
     bool showsSoftStrain() const { return m_showSoftStrain; }
     void setShowSoftEllipses(bool on);
     void setShowSoftStrain(bool on);
+
+    /// The vector arrows, their legend and the trails drawn over the bodies.
+    CanvasInstruments& instruments() { return *m_instruments; }
+    const CanvasInstruments& instruments() const { return *m_instruments; }
 
     /// The joint items, in the order of World::joints.
     const std::vector<JointItem*>& jointItems() const { return m_jointItems; }
@@ -187,6 +195,7 @@ private:
     const SimulationRunner& m_runner;
     SceneDocument* m_document = nullptr;
     QGraphicsScene* m_scene;
+    CanvasInstruments* m_instruments;
     std::vector<BodyItem*> m_bodyItems;
     std::vector<SpringItem*> m_springItems;
     std::vector<JointItem*> m_jointItems;

@@ -5,11 +5,14 @@
 #include "controller/soft/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
+#include "view/graph_panel.h"
 #include "view/pace_indicator.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
 #include "view/simulation_runner.h"
+#include "view/timeline.h"
+#include "view/timeline_bar.h"
 #include "view/view_constants.h"
 
 #include <QAction>
@@ -28,8 +31,10 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 #include <array>
 #include <memory>
@@ -53,6 +58,9 @@ constexpr qsizetype kMaxRecentFiles = 8;
 constexpr std::array<double, 7> kSpeeds = {0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 4.0};
 constexpr int kRealTimeSpeedIndex = 3;
 
+/// The choices of View › Trail Dots Every, steps: from every step to one a second at 240 Hz.
+constexpr std::array<int, 6> kTrailDotChoices = {1, 6, 12, 24, 60, 240};
+
 /// QSettings keys.
 const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("window/geometry");
@@ -67,11 +75,21 @@ MainWindow::MainWindow(QWidget* parent)
     , m_canvas(new CanvasView(m_document->runner(), this))
 {
     m_canvas->setDocument(*m_document);
-    setCentralWidget(m_canvas);
+    m_timeline = new Timeline(m_document->runner(), this);
+    // The canvas with the timeline under it, as the central widget.
+    auto* centre = new QWidget(this);
+    auto* centreLayout = new QVBoxLayout(centre);
+    centreLayout->setContentsMargins(0, 0, 0, 0);
+    centreLayout->setSpacing(0);
+    centreLayout->addWidget(m_canvas, 1);
+    m_timelineBar = new TimelineBar(*m_timeline, m_document->runner(), centre);
+    centreLayout->addWidget(m_timelineBar);
+    setCentralWidget(centre);
     setWindowIcon(QIcon(QStringLiteral(":/icons/impetus.svg")));
     setAccessibleName(tr("Impetus main window"));
 
     createActions();
+    m_timelineBar->setStepBackAction(m_stepBackAction);
     createToolActions();
     createMenus();
     createToolBars();
@@ -82,6 +100,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
     connect(&runner, &SimulationRunner::diverged, this, &MainWindow::showDivergence);
     connect(&runner, &SimulationRunner::computingStepChanged, this, &MainWindow::updateStepAction);
+    connect(m_timeline, &Timeline::rangeChanged, this, &MainWindow::updateStepAction);
+    connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStepAction);
     connect(m_document, &SceneDocument::stepped, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStatus);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateSoftStatus);
@@ -196,6 +216,11 @@ void MainWindow::createActions()
     m_stepAction->setToolTip(tr("Advance one time step (→)"));
     connect(m_stepAction, &QAction::triggered, m_document, &SceneDocument::stepOnce);
 
+    m_stepBackAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Step Back"), this);
+    m_stepBackAction->setShortcut(QKeySequence(Qt::Key_Left));
+    m_stepBackAction->setToolTip(tr("Go back one time step along the timeline (←)"));
+    connect(m_stepBackAction, &QAction::triggered, this, [this] { m_timeline->stepBack(); });
+
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Reset"), this);
     m_resetAction->setShortcut(QKeySequence(Qt::Key_R));
     m_resetAction->setToolTip(tr("Go back to the state at the last Play (R)"));
@@ -205,7 +230,8 @@ void MainWindow::createActions()
     for (QAction* action : {m_newAction, m_openAction, m_saveAction, m_saveAsAction, m_quitAction, m_undoAction,
                             m_redoAction, m_selectAllAction})
         addAction(action);
-    for (QAction* action : {m_deleteAction, m_snapAction, m_frameAction, m_playAction, m_stepAction, m_resetAction})
+    for (QAction* action : {m_deleteAction, m_snapAction, m_frameAction, m_playAction, m_stepAction, m_stepBackAction,
+                            m_resetAction})
         addCanvasShortcut(action);
 }
 
@@ -238,6 +264,10 @@ void MainWindow::createToolActions()
         {ToolKind::Spring, tr("Spring"), Qt::Key_K, tr("Drag from a body to another body or to a point")},
         {ToolKind::Pin, tr("Pin"), Qt::Key_N, tr("Click on a body to hinge it to the body below or the world")},
         {ToolKind::Rod, tr("Rod"), Qt::Key_L, tr("Drag from a body to another body or to a point")},
+        {ToolKind::Ruler, tr("Ruler"), Qt::Key_M,
+         tr("Click two points, or drag: the distance in metres; snaps to body centres and corners")},
+        {ToolKind::Protractor, tr("Protractor"), Qt::Key_A,
+         tr("Click the vertex, then a point on each arm: the angle in degrees")},
     };
     m_toolGroup = new QActionGroup(this);
     m_toolGroup->setExclusive(true);
@@ -285,12 +315,14 @@ void MainWindow::createMenus()
     viewMenu->addAction(m_softEllipsesAction);
     viewMenu->addAction(m_softStrainAction);
     viewMenu->setObjectName(QStringLiteral("viewMenu"));
+    createInstrumentMenus(viewMenu);
 
     QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
     toolsMenu->addActions(m_toolGroup->actions());
 
     QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     simulationMenu->addAction(m_playAction);
+    simulationMenu->addAction(m_stepBackAction);
     simulationMenu->addAction(m_stepAction);
     simulationMenu->addAction(m_resetAction);
     simulationMenu->addSeparator();
@@ -318,6 +350,128 @@ void MainWindow::createMenus()
     }
 }
 
+void MainWindow::createInstrumentMenus(QMenu* viewMenu)
+{
+    CanvasInstruments& instruments = m_canvas->instruments();
+    QMenu* vectors = viewMenu->addMenu(tr("&Vectors"));
+    vectors->setObjectName(QStringLiteral("vectorsMenu"));
+    struct VectorEntry {
+        VectorKind kind;
+        QString text;
+        QString tip;
+    };
+    const VectorEntry entries[] = {
+        {VectorKind::Velocity, tr("&Velocity"), tr("Arrows of each body's velocity")},
+        {VectorKind::Acceleration, tr("&Acceleration"), tr("Arrows of each body's acceleration, net force / mass")},
+        {VectorKind::NetForce, tr("&Net Force"), tr("Arrows of the net force on each body")},
+        {VectorKind::ForceParts, tr("&Force Parts"),
+         tr("Arrows of gravity, springs, drag, contact normal and friction forces and joint forces")},
+        {VectorKind::Momentum, tr("&Momentum"), tr("Arrows of each body's momentum")},
+    };
+    for (const VectorEntry& entry : entries) {
+        QAction* action = vectors->addAction(entry.text);
+        action->setCheckable(true);
+        action->setStatusTip(entry.tip);
+        const VectorKind kind = entry.kind;
+        connect(action, &QAction::toggled, this, [&instruments, kind](bool on) { instruments.setShowVector(kind, on); });
+        m_vectorActions[static_cast<std::size_t>(kind)] = action;
+    }
+    vectors->addSeparator();
+    QAction* longer = vectors->addAction(tr("&Longer Arrows"), this, [&instruments] {
+        instruments.scaleArrows(constants::kVectorScaleStep);
+    });
+    longer->setShortcut(QKeySequence(Qt::Key_BracketRight));
+    longer->setStatusTip(tr("Double the length of every arrow (the legend gives the scale)"));
+    QAction* shorter = vectors->addAction(tr("&Shorter Arrows"), this, [&instruments] {
+        instruments.scaleArrows(1 / constants::kVectorScaleStep);
+    });
+    shorter->setShortcut(QKeySequence(Qt::Key_BracketLeft));
+    shorter->setStatusTip(tr("Halve the length of every arrow (the legend gives the scale)"));
+    addCanvasShortcut(longer);
+    addCanvasShortcut(shorter);
+
+    m_trailsAction = viewMenu->addAction(tr("&Trails"));
+    m_trailsAction->setCheckable(true);
+    m_trailsAction->setStatusTip(tr("Draw the path of each body's centre of mass, with a dot every few steps"));
+    connect(m_trailsAction, &QAction::toggled, &instruments, &CanvasInstruments::setShowTrails);
+    QMenu* dots = viewMenu->addMenu(tr("Trail &Dots Every"));
+    dots->setObjectName(QStringLiteral("trailDotsMenu"));
+    auto* dotGroup = new QActionGroup(dots);
+    for (const int steps : kTrailDotChoices) {
+        QAction* action = dots->addAction(tr("%n step(s)", nullptr, steps));
+        action->setCheckable(true);
+        action->setChecked(steps == constants::kDefaultTrailDotSteps);
+        action->setData(steps);
+        dotGroup->addAction(action);
+        connect(action, &QAction::triggered, &instruments, [&instruments, steps] { instruments.setTrailDotSteps(steps); });
+    }
+
+    QAction* selectedOnly = viewMenu->addAction(tr("Vectors and Trails for &Selected Bodies Only"));
+    selectedOnly->setCheckable(true);
+    selectedOnly->setStatusTip(tr("Draw arrows and trails only for the bodies selected"));
+    connect(selectedOnly, &QAction::toggled, &instruments, &CanvasInstruments::setSelectedOnly);
+
+    viewMenu->addSeparator();
+    m_newGraphAction = viewMenu->addAction(tr("New &Graph"), this, [this] {
+        const std::vector<int>& selected = m_document->selection().bodies;
+        const model::World& world = m_document->world();
+        const QString name = selected.empty() ? QString()
+                                              : QString::fromStdString(world.bodies[static_cast<std::size_t>(selected.front())].name);
+        addGraph(name, GraphQuantity::Y);
+    });
+    m_newGraphAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
+    m_newGraphAction->setStatusTip(tr("Plot a quantity of the selected body against time, or against another quantity"));
+    addAction(m_newGraphAction);
+
+    connect(&instruments, &CanvasInstruments::samplingChanged, this, &MainWindow::updateSampling);
+    connect(m_timeline, &Timeline::futureDiscarded, &instruments, &CanvasInstruments::discardAfter);
+}
+
+GraphPanel* MainWindow::addGraph(const QString& bodyName, GraphQuantity y, GraphQuantity x)
+{
+    SimulationRunner& runner = m_document->runner();
+    auto* dock = new QDockWidget(this);
+    dock->setObjectName(QStringLiteral("graphDock"));
+    // A closed graph is gone, and with it what the runner records for it.
+    dock->setAttribute(Qt::WA_DeleteOnClose);
+    auto* panel = new GraphPanel(runner, bodyName, y, x, dock);
+    dock->setWidget(panel);
+    dock->setWindowTitle(panel->title());
+    connect(panel, &GraphPanel::titleChanged, dock, &QDockWidget::setWindowTitle);
+    connect(&runner, &SimulationRunner::sampled, panel, &GraphPanel::addSamples);
+    connect(m_document, &SceneDocument::worldChanged, panel, &GraphPanel::onWorldChanged);
+    connect(m_document, &SceneDocument::stepped, panel, &GraphPanel::onWorldChanged);
+    connect(m_document, &SceneDocument::sceneReplaced, panel, &GraphPanel::onSceneReplaced);
+    connect(m_timeline, &Timeline::futureDiscarded, panel, &GraphPanel::discardAfter);
+    connect(panel, &GraphPanel::bodyChanged, this, &MainWindow::updateSampling);
+    connect(dock, &QObject::destroyed, this, [this] { QTimer::singleShot(0, this, &MainWindow::updateSampling); });
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    updateSampling();
+    return panel;
+}
+
+std::vector<GraphPanel*> MainWindow::graphPanels() const
+{
+    std::vector<GraphPanel*> panels;
+    for (QDockWidget* dock : findChildren<QDockWidget*>(QStringLiteral("graphDock"))) {
+        if (auto* panel = qobject_cast<GraphPanel*>(dock->widget()))
+            panels.push_back(panel);
+    }
+    return panels;
+}
+
+void MainWindow::updateSampling()
+{
+    SampleRequest request;
+    request.centres = m_canvas->instruments().needsCentres();
+    for (const GraphPanel* panel : graphPanels()) {
+        if (panel->body() && std::ranges::find(request.bodies, *panel->body()) == request.bodies.end())
+            request.bodies.push_back(*panel->body());
+        request.totals = true;
+    }
+    m_document->runner().setSampleRequest(std::move(request));
+}
+
 void MainWindow::createToolBars()
 {
     QToolBar* runBar = addToolBar(tr("Run controls"));
@@ -325,12 +479,15 @@ void MainWindow::createToolBars()
     runBar->setAccessibleName(tr("Run controls"));
     runBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     runBar->addAction(m_playAction);
+    runBar->addAction(m_stepBackAction);
     runBar->addAction(m_stepAction);
     runBar->addAction(m_resetAction);
     if (QWidget* button = runBar->widgetForAction(m_playAction))
         button->setAccessibleName(tr("Play or pause"));
     if (QWidget* button = runBar->widgetForAction(m_stepAction))
         button->setAccessibleName(tr("Step once"));
+    if (QWidget* button = runBar->widgetForAction(m_stepBackAction))
+        button->setAccessibleName(tr("Step back once"));
     if (QWidget* button = runBar->widgetForAction(m_resetAction))
         button->setAccessibleName(tr("Reset to the last Play"));
 
@@ -659,6 +816,7 @@ void MainWindow::updateStepAction()
     // Step waits for the step it asked for: presses while it is computed would pile up steps.
     const SimulationRunner& runner = m_document->runner();
     m_stepAction->setEnabled(!runner.isRunning() && !runner.isComputingStep());
+    m_stepBackAction->setEnabled(!runner.isComputingStep() && m_timeline->currentStep() > m_timeline->firstStep());
 }
 
 void MainWindow::updateStatus()

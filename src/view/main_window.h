@@ -5,14 +5,18 @@
 
 #include "controller/soft/soft_comparison.h"
 #include "model/world.h"
+#include "view/canvas_instruments.h"
+#include "view/graph_quantity.h"
 #include "view/tools/tool.h"
 
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
 
+#include <array>
 #include <map>
 #include <optional>
+#include <vector>
 
 class QAction;
 class QActionGroup;
@@ -25,10 +29,13 @@ class QMessageBox;
 namespace impetus::view {
 
 class CanvasView;
+class GraphPanel;
 class PaceIndicator;
 class PropertyPane;
 class SceneDocument;
 class SimulationRunner;
+class Timeline;
+class TimelineBar;
 
 /// The application window. The canvas is the central widget; a tool bar on the left holds the
 /// drawing tools, one at the top the run controls (Play/Pause Space, Step →, Reset R, speed). The
@@ -118,6 +125,11 @@ public:
     QAction* playAction() const { return m_playAction; }
     /// The Step action (→).
     QAction* stepAction() const { return m_stepAction; }
+    /// The Step Back action (←): back one fixed step along the timeline.
+    QAction* stepBackAction() const { return m_stepBackAction; }
+    /// The run's timeline, and the bar under the canvas that moves along it.
+    Timeline& timeline() { return *m_timeline; }
+    TimelineBar* timelineBar() const { return m_timelineBar; }
     /// The Reset action (R): back to the world at the last Play.
     QAction* resetAction() const { return m_resetAction; }
     /// Edit > Undo (Ctrl+Z), named after the command it undoes.
@@ -126,6 +138,17 @@ public:
     QAction* redoAction() const { return m_redoAction; }
     /// Edit > Delete (Del).
     QAction* deleteAction() const { return m_deleteAction; }
+    /// View › Vectors: the checkable action that shows arrows of `kind`.
+    QAction* vectorAction(VectorKind kind) const { return m_vectorActions.at(static_cast<std::size_t>(kind)); }
+    /// Opens a graph of `y` against `x` for the body called `bodyName` (the first moving body when
+    /// empty) in a dock of its own (object name "graphDock"), and returns it.
+    GraphPanel* addGraph(const QString& bodyName, GraphQuantity y, GraphQuantity x = GraphQuantity::Time);
+    /// The graphs open, oldest first.
+    std::vector<GraphPanel*> graphPanels() const;
+    /// View › New Graph: a graph of the selected body (or the first moving one).
+    QAction* newGraphAction() const { return m_newGraphAction; }
+    /// View › Trails (checkable).
+    QAction* trailsAction() const { return m_trailsAction; }
     /// View > Snap to Grid (checkable).
     QAction* snapAction() const { return m_snapAction; }
     /// The action that makes `kind` the current tool.
@@ -154,6 +177,10 @@ private:
     /// drift.
     void compareSelectedWithRigid();
     void addCanvasShortcut(QAction* action);
+    /// View › Vectors and View › Trails: the canvas instruments' menu.
+    void createInstrumentMenus(QMenu* viewMenu);
+    /// Tells the runner what the instruments need recorded after each step.
+    void updateSampling();
     void openSceneDialog();
     bool saveAsDialog();
     void openExample(const QString& path, const QString& title);
@@ -188,6 +215,12 @@ private:
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
     QAction* m_resetAction = nullptr;
+    QAction* m_stepBackAction = nullptr;
+    std::array<QAction*, kVectorKindCount> m_vectorActions{};
+    QAction* m_trailsAction = nullptr;
+    QAction* m_newGraphAction = nullptr;
+    Timeline* m_timeline = nullptr;
+    TimelineBar* m_timelineBar = nullptr;
     QActionGroup* m_toolGroup = nullptr;
     std::map<ToolKind, QAction*> m_toolActions;
     QComboBox* m_speedBox = nullptr;

@@ -167,6 +167,16 @@ void SimulationRunner::resetToLastPlay()
     emit worldChanged();
 }
 
+void SimulationRunner::showState(model::World world)
+{
+    pause();
+    m_world = std::move(world);
+    m_accumulator = 0;
+    emit worldChanged();
+}
+
+void SimulationRunner::setSampleRequest(SampleRequest request) { m_sampling = std::move(request); }
+
 void SimulationRunner::onTimerTick()
 {
     // Measure the real time since the last tick rather than trusting the timer interval: timers
@@ -214,13 +224,13 @@ bool SimulationRunner::startNextBatch(bool runOwed)
     InFlight batch;
     if (m_stepsAsked > 0) {
         batch.kind = BatchKind::Steps;
-        m_worker->start(StepBatch{m_world, m_stepsAsked, std::nullopt, std::nullopt});
+        m_worker->start(StepBatch{m_world, m_stepsAsked, std::nullopt, std::nullopt, m_sampling});
     } else if (runOwed && dt > 0 && m_accumulator >= dt) {
         batch.kind = BatchKind::Run;
         batch.owed = m_accumulator;
         const auto budget = std::chrono::duration_cast<std::chrono::nanoseconds>(
             std::chrono::duration<double, std::milli>(constants::kMaxBatchWallTimeMs));
-        m_worker->start(StepBatch{m_world, maxStepsPerFrame(), m_accumulator, budget});
+        m_worker->start(StepBatch{m_world, maxStepsPerFrame(), m_accumulator, budget, m_sampling});
         m_accumulator = 0;
     } else {
         return false;
@@ -273,6 +283,8 @@ std::int64_t SimulationRunner::collectBatch()
     m_pace.profile = outcome->profile;
     m_pace.stability = std::move(outcome->stability);
     m_world = std::move(outcome->world);
+    if (!outcome->samples.empty())
+        emit sampled(outcome->samples);
     emit stepped();
     return steps;
 }

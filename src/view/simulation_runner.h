@@ -86,6 +86,16 @@ public:
     /// saved at the last play(). Emits worldChanged(), then sceneReplaced().
     void setWorld(model::World world);
 
+    /// Pauses (dropping any step being computed) and shows `world`, a state of the same run taken
+    /// from its timeline: not an edit, and the world saved at the last play() stays. Emits
+    /// worldChanged().
+    void showState(model::World world);
+
+    /// What to record after every step from the next batch on (sampled() hands it over).
+    void setSampleRequest(SampleRequest request);
+    /// What is recorded after every step.
+    const SampleRequest& sampleRequest() const { return m_sampling; }
+
     /// Changes the world in place by calling `edit` on it: an edit from the editor. A batch being
     /// computed is overtaken (see the class comment), so the edit never races the worker; a
     /// running simulation keeps running, the next step starts from the edited world, and Steps
@@ -165,6 +175,10 @@ signals:
     /// setWorld() put in a different scene (after its worldChanged()): a canvas frames it anew.
     void sceneReplaced();
 
+    /// The steps of a batch about to be shown were recorded as sampleRequest() asks: one sample
+    /// per step, in order. Emitted just before the stepped() of the same batch.
+    void sampled(const std::vector<StepSample>& samples);
+
     /// The world advanced by one or more fixed steps; the bodies are the same.
     void stepped();
 
@@ -240,6 +254,7 @@ private:
     /// The last measuring windows (wall time, simulated time advanced), s, oldest first.
     std::array<PaceWindow, constants::kPaceWindowsAveraged> m_pastWindows{};
     RunPace m_pace;
+    SampleRequest m_sampling;
     /// Last: destroyed first, so that its thread has stopped before anything it reports to goes.
     std::unique_ptr<StepWorker> m_worker;
 };

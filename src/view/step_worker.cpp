@@ -113,6 +113,8 @@ StepOutcome StepWorker::compute(StepBatch batch, const StepFunction& step)
         }
         step(m_simulation, batch.world);
         ++outcome.steps;
+        if (!batch.sampling.empty())
+            outcome.samples.push_back(takeSample(batch.world, batch.sampling));
         if (batch.owed)
             owed -= dt;
         if (batch.wallBudget && std::chrono::steady_clock::now() - start >= *batch.wallBudget)

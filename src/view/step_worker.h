@@ -6,6 +6,7 @@
 #include "controller/simulation.h"
 #include "controller/soft/soft_stability.h"
 #include "model/world.h"
+#include "view/step_sample.h"
 
 #include <atomic>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 namespace impetus::view {
 
@@ -32,6 +34,8 @@ struct StepBatch {
     /// Wall time after which the batch stops at the end of its current step (it takes at least
     /// one), so that a run shows a new state about once a frame. None: no limit.
     std::optional<std::chrono::nanoseconds> wallBudget;
+    /// What to record after each step (takeSample); nothing when empty.
+    SampleRequest sampling;
 };
 
 /// What a StepBatch did.
@@ -45,6 +49,8 @@ struct StepOutcome {
     controller::SoftStability stability; ///< Simulation::stability() after the last step taken
     /// controller::firstNonFiniteBody() of the world after the steps: the body that blew up.
     std::optional<std::size_t> nonFiniteBody;
+    /// One record per step taken, in order, when the batch's sampling asked for any.
+    std::vector<StepSample> samples;
 };
 
 /// Owns a thread and a controller::Simulation and takes one StepBatch at a time on that thread.

@@ -202,4 +202,78 @@ inline const QColor kGridLabelColor{0x78, 0x71, 0x6c};
 inline const QColor kSelectionColor{0xf5, 0x9e, 0x0b};
 inline const QColor kPreviewColor{0x25, 0x63, 0xeb};
 
+// ---- Instruments (issue 13) ----
+
+/// The timeline keeps the world every this many fixed steps (a keyframe) and replays the steps in
+/// between when the user goes back to one: 240 steps is 1 s at the default step, so going back
+/// replays at most a second of simulation (microseconds for a classroom scene), and a 5-minute run
+/// of the 2000-body scene keeps 300 keyframes (docs/app.md, "Timeline").
+inline constexpr std::int64_t kKeyframeIntervalSteps = 240;
+
+/// The most memory the timeline's keyframes may take, bytes. When one more would pass it, every
+/// other periodic keyframe is dropped and the interval doubles, so a run of any length fits;
+/// 400 MiB leaves room under the 500 MB a 5-minute run of the 2000-body scene may use.
+inline constexpr std::size_t kTimelineMemoryBudgetBytes = std::size_t{400} * 1024 * 1024;
+
+/// The timeline slider's steps are fixed steps; its page (a click in the groove) moves this many.
+inline constexpr int kTimelinePageSteps = 240;
+
+/// Vector arrows: the scale of the legend, "1 unit = this many metres on the canvas", that a new
+/// canvas starts with for each kind, and the factor one click of the legend's − and + changes it by.
+inline constexpr double kDefaultVelocityScale = 0.25; ///< m of arrow per m/s
+inline constexpr double kDefaultAccelerationScale = 0.05; ///< m of arrow per m/s²
+inline constexpr double kDefaultForceScale = 0.05; ///< m of arrow per N
+inline constexpr double kDefaultMomentumScale = 0.25; ///< m of arrow per kg·m/s
+inline constexpr double kVectorScaleStep = 2.0;
+
+/// Arrows shorter than this on screen are not drawn, px: a head on a zero-length shaft is noise.
+inline constexpr double kMinArrowPx = 2.0;
+/// Arrow shaft width and head length, px: constant on screen, so arrows read at every zoom.
+inline constexpr double kArrowWidthPx = 2.5;
+inline constexpr double kArrowHeadPx = 9.0;
+/// The longest arrow drawn, px: a huge impact force is clipped to this (and drawn dashed) rather
+/// than crossing the whole window.
+inline constexpr double kMaxArrowPx = 2000.0;
+
+/// Arrow colours, one per quantity, told apart from each other and from body colours.
+inline const QColor kVelocityColor{0x16, 0xa3, 0x4a};
+inline const QColor kAccelerationColor{0xc0, 0x26, 0xd3};
+inline const QColor kNetForceColor{0xdc, 0x26, 0x26};
+inline const QColor kGravityColor{0x7c, 0x3a, 0xed};
+inline const QColor kSpringForceColor{0x92, 0x40, 0x0e};
+inline const QColor kDragForceColor{0x0e, 0x74, 0x90};
+inline const QColor kContactNormalColor{0x1d, 0x4e, 0xd8};
+inline const QColor kFrictionColor{0xea, 0x58, 0x0c};
+inline const QColor kJointForceColor{0x47, 0x55, 0x69};
+inline const QColor kMomentumColor{0x0f, 0x76, 0x6e};
+
+/// The legend's box in the canvas's top-left corner: margin and padding, px.
+inline constexpr double kLegendMarginPx = 8.0;
+inline constexpr double kLegendPaddingPx = 6.0;
+
+/// Trails: a dot every this many steps by default (24 steps is 0.1 s at the default step: ten
+/// dots a second, far enough apart to see their spacing change).
+inline constexpr int kDefaultTrailDotSteps = 24;
+/// The most points a trail keeps per body: 36 000 steps is 2.5 minutes at the default step; the
+/// oldest go first.
+inline constexpr std::size_t kMaxTrailPoints = 36000;
+/// The most points all trails keep together, so that trails on a large scene stay small: 4 million
+/// points of 24 bytes (about 100 MB). The 2000-body scene keeps 2000 per body, 8 s at 240 Hz.
+inline constexpr std::size_t kMaxTrailPointsInAll = 4000000;
+/// Trail line width and dot radius, px.
+inline constexpr double kTrailWidthPx = 1.5;
+inline constexpr double kTrailDotRadiusPx = 2.5;
+/// Trail colour alpha: the path reads under the bodies without hiding them.
+inline constexpr int kTrailAlpha = 170;
+
+/// Graphs: the most samples one graph keeps (1 h at the default step); the oldest go first.
+inline constexpr std::size_t kMaxGraphSamples = 864000;
+/// A graph redraws its series at most this often while running, ms: Qt Charts redraws a series
+/// of thousands of points slower than the physics adds them.
+inline constexpr int kGraphRefreshMs = 100;
+
+/// Ruler and protractor: how close to a body centre or vertex a click snaps to it, px.
+inline constexpr double kMeasureSnapPx = 10.0;
+inline const QColor kMeasureColor{0x0f, 0x17, 0x2a};
+
 } // namespace impetus::view::constants

@@ -28,6 +28,8 @@ enum class ToolKind {
     Spring, ///< drag from a body to another body or to a world point
     Pin, ///< click: a hinge between the bodies under the cursor, or a body and the world
     Rod, ///< drag from a body to another body or to a world point
+    Ruler, ///< click two points (or drag): the distance between them, m
+    Protractor, ///< click a vertex and a point on each arm: the angle between them, degrees
 };
 
 /// A mouse event as a tool sees it: where it happened on the canvas and in the scene.

@@ -1,0 +1,369 @@
+#include "view/canvas_instruments.h"
+
+#include "view/simulation_runner.h"
+#include "view/view_constants.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPolygonF>
+
+#include <algorithm>
+#include <cmath>
+
+namespace impetus::view {
+
+namespace {
+
+/// An arrow's head takes at most this fraction of a short arrow, so that the shaft still shows.
+constexpr double kMaxHeadFraction = 0.6;
+/// The legend's sample arrows are this many head lengths long.
+constexpr double kSwatchHeads = 3;
+/// The legend's paper: white, slightly see-through so the grid shows it is an overlay.
+const QColor kLegendFill(255, 255, 255, 225);
+
+QPointF toPoint(const Vec2& v) { return QPointF(v.x(), v.y()); }
+
+/// An arrow from `from` to `to` (px) with a filled head, in `color`; drawn dashed when `clipped`.
+void drawArrow(QPainter& painter, QPointF from, QPointF to, const QColor& color)
+{
+    QLineF line(from, to);
+    const double length = line.length();
+    if (length < constants::kMinArrowPx)
+        return;
+    bool clipped = false;
+    if (length > constants::kMaxArrowPx) {
+        line.setLength(constants::kMaxArrowPx);
+        to = line.p2();
+        clipped = true;
+    }
+    const double head = std::min(constants::kArrowHeadPx, kMaxHeadFraction * line.length());
+    const QPointF unit = (to - from) / line.length();
+    const QPointF normal(-unit.y(), unit.x());
+    const QPointF base = to - head * unit;
+    QPen pen(color, constants::kArrowWidthPx, clipped ? Qt::DashLine : Qt::SolidLine, Qt::FlatCap);
+    painter.setPen(pen);
+    painter.drawLine(from, base);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(color);
+    painter.drawPolygon(QPolygonF({to, base + 0.5 * head * normal, base - 0.5 * head * normal}));
+}
+
+/// The unit of each kind, as the legend writes it.
+QString unitOf(VectorKind kind)
+{
+    switch (kind) {
+    case VectorKind::Velocity:
+        return CanvasInstruments::tr("m/s");
+    case VectorKind::Acceleration:
+        return CanvasInstruments::tr("m/s²");
+    case VectorKind::NetForce:
+    case VectorKind::ForceParts:
+        return CanvasInstruments::tr("N");
+    case VectorKind::Momentum:
+        return CanvasInstruments::tr("kg·m/s");
+    }
+    return {};
+}
+
+/// One force part as the legend and the arrows show it.
+struct ForcePart {
+    QString name;
+    QColor color;
+    Vec2 controller::BodyForces::* member;
+};
+
+std::array<ForcePart, 6> forceParts()
+{
+    return {{
+        {CanvasInstruments::tr("gravity"), constants::kGravityColor, &controller::BodyForces::gravity},
+        {CanvasInstruments::tr("springs"), constants::kSpringForceColor, &controller::BodyForces::springs},
+        {CanvasInstruments::tr("drag"), constants::kDragForceColor, &controller::BodyForces::drag},
+        {CanvasInstruments::tr("contact normal"), constants::kContactNormalColor, &controller::BodyForces::contactNormal},
+        {CanvasInstruments::tr("friction"), constants::kFrictionColor, &controller::BodyForces::contactFriction},
+        {CanvasInstruments::tr("joints"), constants::kJointForceColor, &controller::BodyForces::joints},
+    }};
+}
+
+} // namespace
+
+CanvasInstruments::CanvasInstruments(const SimulationRunner& runner, QObject* parent)
+    : QObject(parent)
+    , m_runner(runner)
+    , m_dotSteps(constants::kDefaultTrailDotSteps)
+{
+    m_scales[index(VectorKind::Velocity)] = constants::kDefaultVelocityScale;
+    m_scales[index(VectorKind::Acceleration)] = constants::kDefaultAccelerationScale;
+    m_scales[index(VectorKind::NetForce)] = constants::kDefaultForceScale;
+    m_scales[index(VectorKind::ForceParts)] = constants::kDefaultForceScale;
+    m_scales[index(VectorKind::Momentum)] = constants::kDefaultMomentumScale;
+}
+
+void CanvasInstruments::setShowVector(VectorKind kind, bool on)
+{
+    if (m_shown[index(kind)] == on)
+        return;
+    m_shown[index(kind)] = on;
+    refresh();
+}
+
+bool CanvasInstruments::showsAnyVector() const { return std::ranges::any_of(m_shown, [](bool on) { return on; }); }
+
+double CanvasInstruments::vectorScale(VectorKind kind) const
+{
+    // The parts and the net force are compared with each other: one scale for both.
+    if (kind == VectorKind::ForceParts)
+        kind = VectorKind::NetForce;
+    return m_scales[index(kind)];
+}
+
+void CanvasInstruments::scaleArrows(double factor)
+{
+    if (!(factor > 0) || !std::isfinite(factor))
+        return;
+    for (double& scale : m_scales)
+        scale *= factor;
+    emit changed();
+}
+
+void CanvasInstruments::setSelectedOnly(bool on)
+{
+    m_selectedOnly = on;
+    emit changed();
+}
+
+void CanvasInstruments::setSelection(const Selection& selection)
+{
+    m_selection = selection;
+    if (m_selectedOnly)
+        emit changed();
+}
+
+void CanvasInstruments::setShowTrails(bool on)
+{
+    if (m_trails == on)
+        return;
+    m_trails = on;
+    m_trailPoints.clear();
+    if (on)
+        startTrails();
+    emit samplingChanged();
+    emit changed();
+}
+
+void CanvasInstruments::setTrailDotSteps(int steps)
+{
+    m_dotSteps = std::max(1, steps);
+    emit changed();
+}
+
+const std::deque<TrailPoint>& CanvasInstruments::trail(std::size_t body) const
+{
+    static const std::deque<TrailPoint> kNone;
+    return body < m_trailPoints.size() ? m_trailPoints[body] : kNone;
+}
+
+void CanvasInstruments::startTrails()
+{
+    const model::World& world = m_runner.world();
+    m_trailPoints.assign(world.bodies.size(), {});
+    for (std::size_t i = 0; i < world.bodies.size(); ++i)
+        m_trailPoints[i].push_back({world.stepCount, toPoint(world.bodies[i].state.position)});
+}
+
+void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
+{
+    if (!m_trails)
+        return;
+    const std::size_t most =
+        std::min(constants::kMaxTrailPoints, constants::kMaxTrailPointsInAll / std::max<std::size_t>(1, m_trailPoints.size()));
+    for (const StepSample& sample : samples) {
+        if (sample.centres.size() != m_trailPoints.size())
+            continue; // recorded before a body came or went: it belongs to another scene
+        for (std::size_t i = 0; i < sample.centres.size(); ++i) {
+            std::deque<TrailPoint>& points = m_trailPoints[i];
+            // Steps along a run that is already recorded (Step after scrubbing back) add nothing.
+            if (!points.empty() && points.back().step >= sample.step)
+                continue;
+            points.push_back({sample.step, toPoint(sample.centres[i])});
+            if (points.size() > most)
+                points.pop_front();
+        }
+    }
+}
+
+void CanvasInstruments::discardAfter(std::int64_t step)
+{
+    for (std::deque<TrailPoint>& points : m_trailPoints) {
+        while (!points.empty() && points.back().step > step)
+            points.pop_back();
+    }
+    emit changed();
+}
+
+void CanvasInstruments::refresh()
+{
+    const model::World& world = m_runner.world();
+    if (m_trails && m_trailPoints.size() != world.bodies.size())
+        startTrails(); // a body came or went: indices moved, start afresh
+    const bool forces = showsVector(VectorKind::Acceleration) || showsVector(VectorKind::NetForce) ||
+                        showsVector(VectorKind::ForceParts);
+    if (forces)
+        m_forces = controller::reportForces(world);
+    else
+        m_forces.clear();
+    emit changed();
+}
+
+void CanvasInstruments::clear()
+{
+    m_trailPoints.clear();
+    if (m_trails)
+        startTrails();
+    m_selection = {};
+    refresh();
+}
+
+bool CanvasInstruments::drawsBody(std::size_t i) const
+{
+    return !m_selectedOnly || std::ranges::find(m_selection.bodies, static_cast<int>(i)) != m_selection.bodies.end();
+}
+
+void CanvasInstruments::paintTrails(QPainter& painter) const
+{
+    if (!m_trails)
+        return;
+    const model::World& world = m_runner.world();
+    const QTransform toPixels = painter.worldTransform();
+    painter.save();
+    painter.resetTransform();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const std::int64_t shown = world.stepCount;
+    for (std::size_t i = 0; i < m_trailPoints.size() && i < world.bodies.size(); ++i) {
+        if (world.bodies[i].fixed || !drawsBody(i))
+            continue;
+        const model::Color c = world.bodies[i].color;
+        const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
+        QPolygonF line;
+        std::vector<QPointF> dots;
+        for (const TrailPoint& point : m_trailPoints[i]) {
+            if (point.step > shown)
+                break; // scrubbed back: the trail ends where the body is
+            const QPointF px = toPixels.map(point.position);
+            line << px;
+            if (point.step % m_dotSteps == 0)
+                dots.push_back(px);
+        }
+        painter.setPen(QPen(colour, constants::kTrailWidthPx));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPolyline(line);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(colour.darker());
+        for (const QPointF& dot : dots)
+            painter.drawEllipse(dot, constants::kTrailDotRadiusPx, constants::kTrailDotRadiusPx);
+    }
+    painter.restore();
+}
+
+void CanvasInstruments::paintVectors(QPainter& painter) const
+{
+    if (!showsAnyVector())
+        return;
+    const model::World& world = m_runner.world();
+    const QTransform toPixels = painter.worldTransform();
+    painter.save();
+    painter.resetTransform();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const auto arrow = [&](const Vec2& at, const Vec2& value, VectorKind kind, const QColor& color) {
+        const Vec2 tip = at + vectorScale(kind) * value;
+        drawArrow(painter, toPixels.map(toPoint(at)), toPixels.map(toPoint(tip)), color);
+    };
+    const bool forces = m_forces.size() == world.bodies.size();
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (body.fixed || !drawsBody(i))
+            continue;
+        const Vec2 at = body.state.position;
+        if (forces && showsVector(VectorKind::ForceParts)) {
+            for (const ForcePart& part : forceParts())
+                arrow(at, m_forces[i].*part.member, VectorKind::ForceParts, part.color);
+        }
+        if (forces && showsVector(VectorKind::NetForce))
+            arrow(at, m_forces[i].net(), VectorKind::NetForce, constants::kNetForceColor);
+        if (forces && showsVector(VectorKind::Acceleration))
+            arrow(at, m_forces[i].acceleration, VectorKind::Acceleration, constants::kAccelerationColor);
+        if (showsVector(VectorKind::Momentum))
+            arrow(at, body.mass * body.state.velocity, VectorKind::Momentum, constants::kMomentumColor);
+        if (showsVector(VectorKind::Velocity))
+            arrow(at, body.state.velocity, VectorKind::Velocity, constants::kVelocityColor);
+    }
+    painter.restore();
+}
+
+QStringList CanvasInstruments::legendLines() const
+{
+    QStringList lines;
+    const auto scaleText = [&](VectorKind kind) {
+        return tr("1 %1 = %2 m").arg(unitOf(kind)).arg(vectorScale(kind), 0, 'g', 3);
+    };
+    if (showsVector(VectorKind::Velocity))
+        lines << tr("velocity: %1").arg(scaleText(VectorKind::Velocity));
+    if (showsVector(VectorKind::Acceleration))
+        lines << tr("acceleration: %1").arg(scaleText(VectorKind::Acceleration));
+    if (showsVector(VectorKind::NetForce))
+        lines << tr("net force: %1").arg(scaleText(VectorKind::NetForce));
+    if (showsVector(VectorKind::ForceParts)) {
+        for (const ForcePart& part : forceParts())
+            lines << tr("%1: %2").arg(part.name, scaleText(VectorKind::ForceParts));
+    }
+    if (showsVector(VectorKind::Momentum))
+        lines << tr("momentum: %1").arg(scaleText(VectorKind::Momentum));
+    return lines;
+}
+
+void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) const
+{
+    const QStringList lines = legendLines();
+    if (lines.isEmpty())
+        return;
+    std::vector<QColor> colours;
+    if (showsVector(VectorKind::Velocity))
+        colours.push_back(constants::kVelocityColor);
+    if (showsVector(VectorKind::Acceleration))
+        colours.push_back(constants::kAccelerationColor);
+    if (showsVector(VectorKind::NetForce))
+        colours.push_back(constants::kNetForceColor);
+    if (showsVector(VectorKind::ForceParts)) {
+        for (const ForcePart& part : forceParts())
+            colours.push_back(part.color);
+    }
+    if (showsVector(VectorKind::Momentum))
+        colours.push_back(constants::kMomentumColor);
+
+    painter.save();
+    painter.resetTransform();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QFontMetricsF metrics(painter.font());
+    const double pad = constants::kLegendPaddingPx;
+    const double swatch = kSwatchHeads * constants::kArrowHeadPx;
+    double width = 0;
+    for (const QString& line : lines)
+        width = std::max(width, metrics.horizontalAdvance(line));
+    const double lineHeight = metrics.height();
+    const QRectF box(viewport.left() + constants::kLegendMarginPx, viewport.top() + constants::kLegendMarginPx,
+                     width + swatch + 3 * pad, lineHeight * static_cast<double>(lines.size()) + 2 * pad);
+    painter.setPen(QPen(constants::kMinorGridColor.darker(), 1));
+    painter.setBrush(kLegendFill);
+    painter.drawRect(box);
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        const double y = box.top() + pad + lineHeight * (static_cast<double>(i) + 0.5);
+        drawArrow(painter, QPointF(box.left() + pad, y), QPointF(box.left() + pad + swatch, y),
+                  colours[static_cast<std::size_t>(i)]);
+        painter.setPen(constants::kMeasureColor);
+        painter.drawText(QPointF(box.left() + 2 * pad + swatch, y + metrics.ascent() / 2 - metrics.descent() / 2),
+                         lines[i]);
+    }
+    painter.restore();
+}
+
+} // namespace impetus::view

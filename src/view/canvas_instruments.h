@@ -1,0 +1,141 @@
+#pragma once
+/// \file canvas_instruments.h
+/// What the canvas draws over the bodies to measure them: vector arrows (velocity, acceleration,
+/// forces, momentum) with their legend, and trails of the bodies' centres of mass.
+
+#include "controller/force_report.h"
+#include "model/world.h"
+#include "view/selection.h"
+#include "view/step_sample.h"
+
+#include <QColor>
+#include <QCoreApplication>
+#include <QObject>
+#include <QRectF>
+#include <QString>
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+class QPainter;
+
+namespace impetus::view {
+
+class SimulationRunner;
+
+/// The quantities drawn as arrows from a body's centre of mass.
+enum class VectorKind : std::uint8_t {
+    Velocity, ///< v, m/s
+    Acceleration, ///< a = F/m, m/s²
+    NetForce, ///< ΣF, N
+    ForceParts, ///< gravity, springs, drag, contact normal and friction, joints, each its own arrow, N
+    Momentum, ///< p = m·v, kg·m/s
+};
+inline constexpr std::size_t kVectorKindCount = 5;
+
+/// One point of a trail: where a body's centre of mass was after a step.
+struct TrailPoint {
+    std::int64_t step = 0; ///< World::stepCount
+    QPointF position; ///< m
+};
+
+/// The canvas's measuring overlays for one SimulationRunner's world.
+///
+/// Arrows: each kind is drawn for every dynamic body (or only the selected ones, see
+/// setSelectedOnly()), from its centre of mass, with a length of value × scale metres on the
+/// canvas, so that they grow and shrink with the zoom like the bodies; their width and heads stay
+/// the same on screen, and an arrow shorter than constants::kMinArrowPx is left out. Forces come
+/// from the engine (controller::reportForces), computed once per state shown. A legend in the
+/// top-left corner gives each kind's colour and scale ("velocity: 1 m/s = 0.25 m").
+///
+/// Trails: with trails on, the runner records every body's centre after every step; each body's
+/// trail is the line through them, with a dot every trailDotSteps() steps (steps that are
+/// multiples of it), up to the step shown: scrubbing back shortens the trail, and the timeline's
+/// futureDiscarded() forgets what follows.
+class CanvasInstruments : public QObject {
+    Q_OBJECT
+
+public:
+    /// Instruments for `runner`'s world; the runner outlives them.
+    explicit CanvasInstruments(const SimulationRunner& runner, QObject* parent = nullptr);
+
+    bool showsVector(VectorKind kind) const { return m_shown[index(kind)]; }
+    void setShowVector(VectorKind kind, bool on);
+    /// True when any vector kind is shown.
+    bool showsAnyVector() const;
+
+    /// Metres of arrow per unit of `kind` (m per m/s, per m/s², per N, per kg·m/s); force parts
+    /// share the net force's scale.
+    double vectorScale(VectorKind kind) const;
+    /// Multiplies every kind's scale by `factor` (> 0): longer or shorter arrows.
+    void scaleArrows(double factor);
+
+    /// Draws arrows and trails for the selected bodies only (true) or for every body (false).
+    bool selectedOnly() const { return m_selectedOnly; }
+    void setSelectedOnly(bool on);
+    /// The selection, for selectedOnly().
+    void setSelection(const Selection& selection);
+
+    bool showsTrails() const { return m_trails; }
+    /// Turns trails on (starting from the bodies' centres now) or off (forgetting them).
+    void setShowTrails(bool on);
+    /// Steps between the dots of a trail (constants::kDefaultTrailDotSteps), ≥ 1.
+    int trailDotSteps() const { return m_dotSteps; }
+    void setTrailDotSteps(int steps);
+    /// Body i's trail, oldest first (empty when trails are off or i is out of range).
+    const std::deque<TrailPoint>& trail(std::size_t body) const;
+
+    /// What the trails need recorded after each step.
+    bool needsCentres() const { return m_trails; }
+
+    /// The forces of the state shown (empty when no force or acceleration arrow is shown).
+    const std::vector<controller::BodyForces>& forces() const { return m_forces; }
+
+    /// Paints the trails; `painter` is in scene coordinates (m, y up).
+    void paintTrails(QPainter& painter) const;
+    /// Paints the arrows; `painter` is in scene coordinates.
+    void paintVectors(QPainter& painter) const;
+    /// Paints the legend into the viewport rectangle `viewport` (px); the painter's transform is
+    /// reset for it.
+    void paintLegend(QPainter& painter, const QRectF& viewport) const;
+
+    /// The legend's lines, as painted (for tests and the accessibility description).
+    QStringList legendLines() const;
+
+public slots:
+    /// Takes a batch's samples into the trails.
+    void addSamples(const std::vector<StepSample>& samples);
+    /// Forgets trail points after `step` (the timeline's futureDiscarded()).
+    void discardAfter(std::int64_t step);
+    /// Follows the world after a step or an edit: recomputes the forces when they are shown.
+    void refresh();
+    /// A new scene: forgets the trails.
+    void clear();
+
+signals:
+    /// Something drawn changed: repaint.
+    void changed();
+    /// needsCentres() changed.
+    void samplingChanged();
+
+private:
+    static std::size_t index(VectorKind kind) { return static_cast<std::size_t>(kind); }
+    /// True when body i gets arrows and a trail.
+    bool drawsBody(std::size_t i) const;
+    /// Starts every body's trail at its centre now.
+    void startTrails();
+
+    const SimulationRunner& m_runner;
+    std::array<bool, kVectorKindCount> m_shown{};
+    std::array<double, kVectorKindCount> m_scales{};
+    bool m_selectedOnly = false;
+    Selection m_selection;
+    bool m_trails = false;
+    int m_dotSteps;
+    std::vector<std::deque<TrailPoint>> m_trailPoints;
+    std::vector<controller::BodyForces> m_forces;
+};
+
+} // namespace impetus::view

@@ -1,0 +1,381 @@
+// The canvas instruments and graphs, driven from the window's menus as a user would: vector
+// arrows found in a grab, their legend and scale, trails with dots every N steps that follow the
+// timeline, and a graph of a falling body's vy exported as CSV.
+
+#include "test_files.h"
+#include "test_settings.h"
+#include "test_worlds.h"
+#include "view/canvas_instruments.h"
+#include "view/canvas_view.h"
+#include "view/graph_panel.h"
+#include "view/main_window.h"
+#include "view/scene_document.h"
+#include "view/simulation_runner.h"
+#include "view/tools/measure_tools.h"
+#include "view/timeline.h"
+#include "view/view_constants.h"
+
+#include <QAction>
+#include <QChartView>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QTest>
+
+#include <cmath>
+
+using impetus::view::CanvasInstruments;
+using impetus::view::GraphPanel;
+using impetus::view::GraphQuantity;
+using impetus::view::MainWindow;
+using impetus::view::VectorKind;
+namespace model = impetus::model;
+namespace constants = impetus::view::constants;
+namespace test = impetus::view::test;
+
+namespace {
+
+/// Pixels of `image` within a small distance of `colour` (antialiased edges blend into the paper),
+/// inside `region` (the whole image when null); their centroid goes to `centroid`.
+int pixelsNear(const QImage& image, const QColor& colour, QPoint* centroid = nullptr, QRect region = {})
+{
+    if (region.isNull())
+        region = image.rect();
+    region = region.intersected(image.rect());
+    int count = 0;
+    long long sx = 0;
+    long long sy = 0;
+    for (int y = region.top(); y <= region.bottom(); ++y) {
+        for (int x = region.left(); x <= region.right(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                    std::abs(c.blue() - colour.blue()) <=
+                24) {
+                ++count;
+                sx += x;
+                sy += y;
+            }
+        }
+    }
+    if (centroid && count > 0)
+        *centroid = QPoint(static_cast<int>(sx / count), static_cast<int>(sy / count));
+    return count;
+}
+
+/// No gravity, a ball at the origin moving to the right at 2 m/s and a fixed marker that frames
+/// the view around it.
+model::World movingBallWorld()
+{
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body ball = test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 0));
+    ball.state.velocity = impetus::Vec2(2, 0);
+    world.bodies.push_back(ball);
+    world.bodies.push_back(test::makeBody("marker", model::Box{0.2, 0.2}, impetus::Vec2(2, 1), true));
+    return world;
+}
+
+/// A ball falling freely from (0, 10) m, with nothing to hit.
+model::World fallingBallWorld()
+{
+    model::World world;
+    world.bodies.push_back(test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 10)));
+    return world;
+}
+
+} // namespace
+
+class InstrumentsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void velocityVectorsAppearInTheGrab();
+    void legendGivesTheScaleAndItCanBeChanged();
+    void forceArrowsOfABoxOnTheFloorComeFromTheEngine();
+    void trailsHaveDotsAndFollowTheTimeline();
+    void graphOfAFallingBodysVyHasSlopeMinusG();
+    void graphExportsAPictureAndFollowsTheTimeline();
+    void rulerBetweenTwoClicksReadsTheDistance();
+    void protractorReadsTheAngle();
+
+private:
+    static bool showActive(MainWindow& window);
+    test::TemporarySettings m_settings;
+};
+
+bool InstrumentsTest::showActive(MainWindow& window)
+{
+    window.resize(900, 650);
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
+void InstrumentsTest::velocityVectorsAppearInTheGrab()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    const QImage before = canvas.viewport()->grab().toImage();
+    QCOMPARE(pixelsNear(before, constants::kVelocityColor), 0);
+
+    window.vectorAction(VectorKind::Velocity)->trigger();
+    QVERIFY(canvas.instruments().showsVector(VectorKind::Velocity));
+    const QImage after = canvas.viewport()->grab().toImage();
+    // 2 m/s at 0.25 m per m/s is 0.5 m of arrow: many pixels at this zoom.
+    const double expectedLengthPx = 2 * constants::kDefaultVelocityScale * canvas.pixelsPerMetre();
+    const QPointF ball = canvas.toView(QPointF(0, 0));
+    // Around the ball, away from the legend's sample arrow in the corner.
+    const int reach = static_cast<int>(2 * expectedLengthPx);
+    const QRect aroundBall(ball.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
+    QPoint centroid;
+    const int arrow = pixelsNear(after, constants::kVelocityColor, &centroid, aroundBall);
+    QVERIFY2(arrow > expectedLengthPx, qPrintable(QStringLiteral("%1 arrow pixels").arg(arrow)));
+    // It points to the right of the ball, along its velocity, at its height.
+    QVERIFY(centroid.x() > ball.x() + 0.25 * expectedLengthPx);
+    QVERIFY(std::abs(centroid.y() - ball.y()) < 0.2 * expectedLengthPx);
+
+    // Zoomed in, the arrow grows with the canvas but keeps its width on screen: about as many
+    // pixels per pixel of length as before. Zoomed far out, it is still drawn.
+    const double density = arrow / expectedLengthPx;
+    canvas.zoomBy(2, ball);
+    const QPointF ballIn = canvas.toView(QPointF(0, 0));
+    const QRect aroundIn(ballIn.toPoint() - QPoint(2 * reach, 2 * reach), QSize(4 * reach, 4 * reach));
+    const int zoomedIn = pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, aroundIn);
+    QVERIFY2(std::abs(zoomedIn / (2 * expectedLengthPx) - density) < 0.25 * density,
+             qPrintable(QStringLiteral("%1 px along %2 px, before %3").arg(zoomedIn).arg(2 * expectedLengthPx).arg(arrow)));
+    canvas.zoomBy(0.05, ballIn);
+    const QPoint ballOut = canvas.toView(QPointF(0, 0)).toPoint();
+    const QRect nearBall(ballOut - QPoint(40, 40), QSize(80, 80));
+    QVERIFY(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, nearBall) > 0);
+
+    window.vectorAction(VectorKind::Velocity)->trigger();
+    QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0); // legend gone too
+}
+
+void InstrumentsTest::legendGivesTheScaleAndItCanBeChanged()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    CanvasInstruments& instruments = window.canvas().instruments();
+    QVERIFY(instruments.legendLines().isEmpty());
+    window.vectorAction(VectorKind::Velocity)->trigger();
+    window.vectorAction(VectorKind::Momentum)->trigger();
+    QCOMPARE(instruments.legendLines(),
+             QStringList({QStringLiteral("velocity: 1 m/s = 0.25 m"), QStringLiteral("momentum: 1 kg·m/s = 0.25 m")}));
+    // "]" on the canvas doubles every arrow, "[" halves them.
+    QTest::keyClick(window.canvas().viewport(), Qt::Key_BracketRight);
+    QCOMPARE(instruments.legendLines().front(), QStringLiteral("velocity: 1 m/s = 0.5 m"));
+    QTest::keyClick(window.canvas().viewport(), Qt::Key_BracketLeft);
+    QTest::keyClick(window.canvas().viewport(), Qt::Key_BracketLeft);
+    QCOMPARE(instruments.legendLines().front(), QStringLiteral("velocity: 1 m/s = 0.125 m"));
+}
+
+void InstrumentsTest::forceArrowsOfABoxOnTheFloorComeFromTheEngine()
+{
+    model::World world;
+    world.bodies.push_back(test::makeBody("floor", model::Box{4, 0.2}, impetus::Vec2(0, -0.1), true));
+    world.bodies.push_back(test::makeBody("box", model::Box{0.5, 0.4}, impetus::Vec2(0, 0.2)));
+    MainWindow window;
+    window.setScene(world, QStringLiteral("box"));
+    QVERIFY(showActive(window));
+    window.runner().stepBy(480); // 2 s: at rest on the floor
+    window.vectorAction(VectorKind::ForceParts)->trigger();
+    const auto& forces = window.canvas().instruments().forces();
+    QCOMPARE(forces.size(), std::size_t{2});
+    const double weight = window.runner().world().bodies[1].mass * 9.81;
+    QVERIFY(std::abs(forces[1].gravity.y() + weight) < 1e-9);
+    QVERIFY(std::abs(forces[1].contactNormal.y() - weight) < 1e-3 * weight);
+    // Gravity down and the floor's push up, both drawn from the box's centre.
+    const QImage image = window.canvas().viewport()->grab().toImage();
+    QPoint gravity;
+    QPoint normal;
+    const QPointF centre = window.canvas().toView(QPointF(0, 0.2));
+    const int reach = static_cast<int>(weight * constants::kDefaultForceScale * window.canvas().pixelsPerMetre()) + 20;
+    const QRect aroundBox(centre.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
+    QVERIFY(pixelsNear(image, constants::kGravityColor, &gravity, aroundBox) > 0);
+    QVERIFY(pixelsNear(image, constants::kContactNormalColor, &normal, aroundBox) > 0);
+    QVERIFY(gravity.y() > centre.y());
+    QVERIFY(normal.y() < centre.y());
+}
+
+void InstrumentsTest::trailsHaveDotsAndFollowTheTimeline()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    window.trailsAction()->trigger();
+    CanvasInstruments& instruments = window.canvas().instruments();
+    QVERIFY(instruments.showsTrails());
+    QVERIFY(window.runner().sampleRequest().centres);
+    for (int i = 0; i < 4; ++i)
+        window.runner().stepBy(12); // batches, as a run shows them
+    const auto& trail = instruments.trail(0);
+    QCOMPARE(trail.size(), std::size_t{49}); // the start and each of 48 steps
+    for (std::size_t k = 0; k < trail.size(); ++k) {
+        QCOMPARE(trail[k].step, static_cast<std::int64_t>(k));
+        // x = 2 m/s · t: equal spacing, as a student reads off the dots.
+        QVERIFY(std::abs(trail[k].position.x() - 2.0 * static_cast<double>(k) / 240) < 1e-12);
+    }
+    // A dot every 24 steps (0.1 s): at steps 0, 24 and 48.
+    const QImage image = window.canvas().viewport()->grab().toImage();
+    const QColor dotColour = QColor(0x3b, 0x82, 0xf6).darker();
+    QVERIFY(pixelsNear(image, dotColour) > 0);
+
+    // Back along the timeline, the trail ends at the ball; Play from there forgets the rest.
+    window.timeline().seek(30);
+    window.runner().play();
+    window.runner().pause();
+    QCOMPARE(instruments.trail(0).size(), std::size_t{31});
+}
+
+void InstrumentsTest::graphOfAFallingBodysVyHasSlopeMinusG()
+{
+    MainWindow window;
+    window.setScene(fallingBallWorld(), QStringLiteral("falling"));
+    QVERIFY(showActive(window));
+    // Select the ball, open a graph, and choose vy in its quantity box, as a user does.
+    window.document().setSelection(impetus::view::Selection{{0}, {}, {}});
+    window.newGraphAction()->trigger();
+    QCOMPARE(window.graphPanels().size(), std::size_t{1});
+    GraphPanel* graph = window.graphPanels().front();
+    auto* yBox = graph->findChild<QComboBox*>(QStringLiteral("graphY"));
+    QVERIFY(yBox);
+    const int vy = yBox->findText(QStringLiteral("vy (m/s)"));
+    QVERIFY(vy >= 0);
+    yBox->setCurrentIndex(vy);
+    emit yBox->activated(vy);
+    QCOMPARE(graph->yQuantity(), GraphQuantity::Vy);
+    QCOMPARE(graph->bodyName(), QStringLiteral("ball"));
+    QVERIFY(!window.runner().sampleRequest().bodies.empty());
+
+    // One second of running, shown in batches: every step is recorded.
+    for (int i = 0; i < 24; ++i)
+        window.runner().stepBy(10);
+    QCOMPARE(graph->records().size(), std::size_t{241});
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("vy.csv"));
+    QVERIFY(!graph->exportCsv(path));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.front(), QStringLiteral("time,body,vy"));
+    QCOMPARE(lines.size(), 242);
+    // Least squares over the rows: vy = a + b·t, with b = −g.
+    double n = 0, st = 0, sv = 0, stt = 0, stv = 0;
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QStringList cells = lines[i].split(QLatin1Char(','));
+        QCOMPARE(cells.size(), 3);
+        QCOMPARE(cells[1], QStringLiteral("ball"));
+        bool okT = false;
+        bool okV = false;
+        const double t = cells[0].toDouble(&okT);
+        const double v = cells[2].toDouble(&okV);
+        QVERIFY(okT && okV);
+        n += 1;
+        st += t;
+        sv += v;
+        stt += t * t;
+        stv += t * v;
+    }
+    const double slope = (n * stv - st * sv) / (n * stt - st * st);
+    const double intercept = (sv - slope * st) / n;
+    QVERIFY2(std::abs(slope + 9.81) < 1e-9, qPrintable(QString::number(slope, 'g', 17)));
+    QVERIFY(std::abs(intercept) < 1e-9);
+}
+
+void InstrumentsTest::graphExportsAPictureAndFollowsTheTimeline()
+{
+    MainWindow window;
+    window.setScene(fallingBallWorld(), QStringLiteral("falling"));
+    QVERIFY(showActive(window));
+    GraphPanel* graph = window.addGraph(QString(), GraphQuantity::Y);
+    window.runner().stepBy(240);
+    QCOMPARE(graph->records().size(), std::size_t{241});
+    QTemporaryDir dir;
+    const QString png = dir.filePath(QStringLiteral("y.png"));
+    QVERIFY(!graph->exportPng(png));
+    const QImage picture(png);
+    QVERIFY(!picture.isNull());
+    QCOMPARE(picture.size(), graph->chartView()->size() * graph->chartView()->devicePixelRatio());
+
+    // A phase plot from the same records: vy against y.
+    graph->setQuantities(GraphQuantity::Vy, GraphQuantity::Y);
+    QCOMPARE(graph->title(), QStringLiteral("vy against y of ball"));
+
+    // Play from t = 0.5 s forgets what the graph had after it.
+    window.timeline().seek(120);
+    window.runner().play();
+    window.runner().pause();
+    QCOMPARE(graph->records().size(), std::size_t{121});
+    QCOMPARE(graph->records().back().step, 120);
+
+    // A file that cannot be written is a message, not a crash.
+    const std::optional<QString> error = graph->exportCsv(dir.filePath(QStringLiteral("no/such/folder/x.csv")));
+    QVERIFY(error.has_value());
+}
+
+void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    QTest::keyClick(viewport, Qt::Key_M);
+    QCOMPARE(canvas.toolKind(), impetus::view::ToolKind::Ruler);
+    auto* ruler = dynamic_cast<impetus::view::RulerTool*>(canvas.tool());
+    QVERIFY(ruler);
+    // Two clicks a few pixels off the ball's centre and the marker's top-right corner: the ends
+    // snap to them.
+    const QPoint near(3, -2);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint() + near);
+    QVERIFY(ruler->text().isEmpty()); // the end follows the cursor until the second click
+    QTest::mouseMove(viewport, canvas.toView(QPointF(1, 0.5)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(2.1, 1.1)).toPoint() - near);
+    QVERIFY(ruler->distance().has_value());
+    const double expected = std::hypot(2.1, 1.1);
+    QVERIFY(std::abs(*ruler->distance() - expected) < 1e-12);
+    QCOMPARE(ruler->text(), QStringLiteral("%1 m").arg(expected, 0, 'f', 3));
+    QCOMPARE(ruler->text(), QStringLiteral("2.371 m"));
+    // Measuring is not an edit.
+    QCOMPARE(window.document().undoStack()->count(), 0);
+    QTest::keyClick(viewport, Qt::Key_Escape);
+    QVERIFY(ruler->text().isEmpty());
+}
+
+void InstrumentsTest::protractorReadsTheAngle()
+{
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    QTest::keyClick(viewport, Qt::Key_A);
+    auto* protractor = dynamic_cast<impetus::view::ProtractorTool*>(canvas.tool());
+    QVERIFY(protractor);
+    // The vertex at the ball's centre, one arm to the marker's centre, one to a free point at
+    // (−1, 0.5) m: the angle between (2, 1) and (−1, 0.5).
+    const QPoint free = canvas.toView(QPointF(-1, 0.5)).toPoint();
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(2, 1)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, free);
+    QVERIFY(protractor->angleDegrees().has_value());
+    const QPointF armEnd = canvas.toScene(free);
+    const double cross = 2 * armEnd.y() - 1 * armEnd.x();
+    const double dot = 2 * armEnd.x() + 1 * armEnd.y();
+    const double expected = std::atan2(std::abs(cross), dot) * 180 / 3.14159265358979323846;
+    QVERIFY(std::abs(*protractor->angleDegrees() - expected) < 1e-9);
+    QVERIFY(std::abs(expected - 126.87) < 1); // about 126.9° at the pixel clicked
+    QCOMPARE(protractor->text(), QStringLiteral("%1°").arg(expected, 0, 'f', 1));
+}
+
+QTEST_MAIN(InstrumentsTest)
+#include "instruments_test.moc"
