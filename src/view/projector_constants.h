@@ -8,12 +8,13 @@
 namespace impetus::view::constants {
 
 /// Window text (menus, tool bars, the attribute pane) in projector mode, × the normal size: a
-/// 10 pt font at 1.6 × reads from the back of a classroom on a 2 m wide screen.
-inline constexpr double kProjectorFontScale = 1.6;
+/// 10 pt font at 1.5 × reads from the back of a classroom on a 2 m wide screen.
+inline constexpr double kProjectorFontScale = 1.5;
 
 /// The readouts in the status bar (time, energies, momentum, collisions) in projector mode, × the
-/// normal size: the numbers the class is asked about, larger again than the rest.
-inline constexpr double kProjectorReadoutScale = 2.2;
+/// normal size: the numbers the class is asked about, larger again than the rest, and as large as
+/// lets every readout still fit across a 1280 px wide projector.
+inline constexpr double kProjectorReadoutScale = 1.8;
 
 /// Line widths on the canvas in projector mode (outlines, springs, rods, markers), × the normal
 /// widths: a 1.5 px outline thins to nothing on a projector that blurs across 2 to 3 px.
