@@ -6,11 +6,12 @@ set -euo pipefail
 
 IMPETUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
-# Build tools, the engine's libraries, Qt for the app, and fonts so that text renders offscreen.
+# Build tools, the engine's libraries, Qt for the app, Qt Linguist's tools for the translations
+# (lrelease at build time, the CMake package), and fonts so that text renders offscreen.
 IMPETUS_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
-  qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 fonts-dejavu-core
+  qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 qt6-l10n-tools qt6-tools-dev fonts-dejavu-core
 )
 
 impetus_install_packages() {

@@ -18,8 +18,12 @@
 /// dialog would hang it. Without --screenshot (a user who double-clicked a file, or typed its
 /// name), the window opens on the default scene and lists every problem in the dialog File > Open
 /// uses; the problems also go to stderr for a terminal user.
+///
+/// The window, the help text and the messages are in the system's language when Impetus has it
+/// (German, Spanish; English otherwise), or in the one chosen in View › Language (view/language.h).
 
 #include "view/canvas_view.h"
+#include "view/language.h"
 #include "view/main_window.h"
 #include "view/scene_loading.h"
 #include "view/screenshot.h"
@@ -41,9 +45,21 @@
 #include <string_view>
 #include <utility>
 
+namespace impetus::app {
+
+/// The translation context of the app's own messages, the command line's help and errors
+/// (resources/translations/*.ts). Named in full, so that lupdate's context and the one tr() uses
+/// at run time are the same string.
+class App {
+    Q_DECLARE_TR_FUNCTIONS(impetus::app::App)
+};
+
+} // namespace impetus::app
+
 namespace {
 
 namespace view = impetus::view;
+using impetus::app::App;
 
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;
@@ -61,7 +77,6 @@ constexpr int kMaxScreenshotSide = 16384;
 /// hours of computing, so anything longer is a mistake.
 constexpr double kMaxScreenshotSteps = 1e9;
 
-QString translate(const char* text) { return QCoreApplication::translate("impetus", text); }
 
 void printError(const QString& message)
 {
@@ -93,7 +108,7 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
 {
     const std::optional<QSize> size = parseSize(sizeText);
     if (!size) {
-        printError(translate("--size must be WxH with both sides from 1 to %1 pixels, not “%2”")
+        printError(App::tr("--size must be WxH with both sides from 1 to %1 pixels, not “%2”")
                        .arg(kMaxScreenshotSide)
                        .arg(sizeText));
         return kExitUsage;
@@ -101,7 +116,7 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
     bool numberOk = false;
     const double runFor = runForText.toDouble(&numberOk);
     if (!numberOk || !std::isfinite(runFor) || runFor < 0) {
-        printError(translate("--run-for must be a number of seconds ≥ 0, not “%1”").arg(runForText));
+        printError(App::tr("--run-for must be a number of seconds ≥ 0, not “%1”").arg(runForText));
         return kExitUsage;
     }
 
@@ -114,7 +129,7 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
 
     const double steps = std::round(runFor / scene.world->settings.timeStep);
     if (steps > kMaxScreenshotSteps) {
-        printError(translate("--run-for %1 s is %2 steps, more than the %3 allowed")
+        printError(App::tr("--run-for %1 s is %2 steps, more than the %3 allowed")
                        .arg(runFor)
                        .arg(steps, 0, 'g', 3)
                        .arg(kMaxScreenshotSteps, 0, 'g', 3));
@@ -138,7 +153,7 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
     for (auto remaining = static_cast<std::int64_t>(steps); remaining > 0; remaining -= chunk) {
         runner.stepBy(std::min(chunk, remaining));
         if (divergence) {
-            printError(translate("the simulation produced a non-finite number: body “%1”, by t = %2 s")
+            printError(App::tr("the simulation produced a non-finite number: body “%1”, by t = %2 s")
                            .arg(divergence->first)
                            .arg(divergence->second));
             return kExitFailure;
@@ -148,7 +163,7 @@ int runScreenshot(const QString& output, const QString& runForText, const QStrin
     const QImage image = view::renderCanvasImage(canvas, *size);
     QImageWriter writer(output, "png");
     if (!writer.write(image)) {
-        printError(translate("cannot write %1: %2").arg(output, writer.errorString()));
+        printError(App::tr("cannot write %1: %2").arg(output, writer.errorString()));
         return kExitFailure;
     }
     return kExitOk;
@@ -180,24 +195,27 @@ int main(int argc, char* argv[])
     QApplication::setApplicationName(QStringLiteral("impetus"));
     // QSettings (recent files, the dock layout) live under this name.
     QApplication::setOrganizationName(QStringLiteral("impetus"));
+    // The system's language, or the one chosen in View › Language, before any text is made: the
+    // help text and the window are built in it. Scene files do not read the locale.
+    view::applyLanguage(app, view::chosenLocale());
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(translate("Impetus, a 2D physics lab for the classroom."));
+    parser.setApplicationDescription(App::tr("Impetus, a 2D physics lab for the classroom."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption screenshotOption(
-        QStringLiteral("screenshot"), translate("Render the canvas to the PNG file FILE and exit."),
-        translate("FILE"));
+        QStringLiteral("screenshot"), App::tr("Render the canvas to the PNG file FILE and exit."),
+        App::tr("FILE"));
     const QCommandLineOption runForOption(
-        QStringLiteral("run-for"), translate("With --screenshot: simulate SECONDS first (default 0)."),
-        translate("SECONDS"), QStringLiteral("0"));
+        QStringLiteral("run-for"), App::tr("With --screenshot: simulate SECONDS first (default 0)."),
+        App::tr("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption sizeOption(
-        QStringLiteral("size"), translate("With --screenshot: the image size in pixels (default 1280x720)."),
-        translate("WxH"), QStringLiteral("%1x%2").arg(kDefaultScreenshotWidth).arg(kDefaultScreenshotHeight));
+        QStringLiteral("size"), App::tr("With --screenshot: the image size in pixels (default 1280x720)."),
+        App::tr("WxH"), QStringLiteral("%1x%2").arg(kDefaultScreenshotWidth).arg(kDefaultScreenshotHeight));
     parser.addOption(screenshotOption);
     parser.addOption(runForOption);
     parser.addOption(sizeOption);
     parser.addPositionalArgument(QStringLiteral("scene"),
-                                 translate("The scene file to open (default: the example scene)."),
+                                 App::tr("The scene file to open (default: the example scene)."),
                                  QStringLiteral("[SCENE.json]"));
 
     // parse() rather than process(): process() exits with 1 on a bad option, and the contract
@@ -211,7 +229,7 @@ int main(int argc, char* argv[])
 
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
-        printError(translate("expected at most one scene file, got %1").arg(positional.size()));
+        printError(App::tr("expected at most one scene file, got %1").arg(positional.size()));
         return kExitUsage;
     }
     const QString scenePath = positional.value(0);
@@ -221,7 +239,7 @@ int main(int argc, char* argv[])
                              parser.value(sizeOption), scenePath);
     }
     if (parser.isSet(runForOption) || parser.isSet(sizeOption)) {
-        printError(translate("--run-for and --size need --screenshot"));
+        printError(App::tr("--run-for and --size need --screenshot"));
         return kExitUsage;
     }
 

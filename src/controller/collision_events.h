@@ -20,7 +20,7 @@ namespace impetus::controller {
 struct CollisionEvent {
     Scalar time = 0; ///< simulated time at the end of the step, s
     model::BodyId bodyA; ///< bodyA.index < bodyB.index
-    model::BodyId bodyB;
+    model::BodyId bodyB; ///< the other body
     Vec2 point = Vec2::Zero(); ///< a contact point (the first of the first touching pair of pieces), m
     Vec2 normal = Vec2::Zero(); ///< unit, from A to B
     Scalar normalImpulse = 0; ///< total normal impulse between the two bodies this step, N·s

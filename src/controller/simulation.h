@@ -70,6 +70,7 @@ int solverSubsteps(Scalar h, Scalar maxSubstep);
 /// physical, including the contact impulses that warm-start the next step.
 class Simulation {
 public:
+    /// A simulation whose solvers use `settings`; the world to step is passed to each step().
     explicit Simulation(SolverSettings settings = {});
 
     /// Advances `world` by one fixed step world.settings.timeStep with world.settings.integrator,

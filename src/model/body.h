@@ -18,15 +18,15 @@ namespace impetus::model {
 /// A strong index into World::bodies. Springs and joints refer to bodies by id, never by pointer,
 /// so a World copies with `=`.
 struct BodyId {
-    std::uint32_t index = 0;
-    auto operator<=>(const BodyId&) const = default;
+    std::uint32_t index = 0; ///< position in World::bodies
+    auto operator<=>(const BodyId&) const = default; ///< memberwise order
 };
 
 /// Surface material. Mixing two materials in a contact is the contact solver's business.
 struct Material {
     Scalar restitution = 0.5; ///< coefficient of restitution e, 0 (plastic) … 1 (elastic)
     Scalar friction = 0.5; ///< Coulomb friction coefficient μ ≥ 0 (0.5: wood on wood)
-    bool operator==(const Material&) const = default;
+    bool operator==(const Material&) const = default; ///< memberwise equality
 };
 
 /// Whether the user gave the body's areal density or its total mass. The other follows from the
@@ -35,9 +35,9 @@ enum class MassMode { Density, Mass };
 
 /// The user's mass choice: `value` is a density in kg/m² (MassMode::Density) or a mass in kg.
 struct MassSpec {
-    MassMode mode = MassMode::Density;
+    MassMode mode = MassMode::Density; ///< what `value` is
     Scalar value = 1.0; ///< kg/m² or kg, > 0
-    bool operator==(const MassSpec&) const = default;
+    bool operator==(const MassSpec&) const = default; ///< memberwise equality
 };
 
 /// Soft-mode settings (scene key `soft`). The body is then simulated as a grid of small ellipses
@@ -47,7 +47,7 @@ struct SoftSettings {
     Scalar ellipsesPerSquareMeter = 64; ///< grid density n, 1/m² (cell side 1/√n); typical 64–1024
     Scalar stiffness = 2000; ///< spring constant of the grid springs, N/m
     Scalar damping = 1.0; ///< damping of the grid springs along their length, N·s/m
-    bool operator==(const SoftSettings&) const = default;
+    bool operator==(const SoftSettings&) const = default; ///< memberwise equality
 };
 
 /// The kinematic state of a body.
@@ -56,7 +56,7 @@ struct BodyState {
     Scalar angle = 0; ///< rad, counter-clockwise
     Vec2 velocity = Vec2::Zero(); ///< velocity of the centre of mass, m/s
     Scalar angularVelocity = 0; ///< rad/s, counter-clockwise
-    bool operator==(const BodyState&) const = default;
+    bool operator==(const BodyState&) const = default; ///< memberwise equality
 };
 
 /// Geometry derived from the shape, in the body frame whose origin is the centre of mass.
@@ -73,22 +73,22 @@ struct BodyGeometry {
     std::vector<std::vector<Vec2>> pieceNormals;
     /// Radius of the smallest origin-centred circle that holds the shape, m.
     Scalar boundingRadius = 0;
-    bool operator==(const BodyGeometry&) const = default;
+    bool operator==(const BodyGeometry&) const = default; ///< memberwise equality
 };
 
 /// A body. The fields up to `soft` are the user's definition; call updateDerived() after changing
 /// `shape`, `massSpec` or `fixed` so that the derived fields below follow.
 struct Body {
     std::string name; ///< unique within the world, non-empty
-    Shape shape = Circle{};
-    BodyState state;
-    MassSpec massSpec;
-    Material material;
+    Shape shape = Circle{}; ///< the body's own shape (scene key `shape`), body frame
+    BodyState state; ///< position, angle and velocities now
+    MassSpec massSpec; ///< density or mass, as the user gave it
+    Material material; ///< restitution and friction
     /// A fixed body has infinite mass and feels no force: it moves only with the velocity and
     /// angular velocity it is given (zero by default: it stays put), like a conveyor belt or a
     /// turning drum, whatever hits it.
     bool fixed = false;
-    Color color;
+    Color color; ///< fill colour in the app (scene key `color`)
     std::optional<SoftSettings> soft; ///< present: soft mode
 
     // Derived by updateDerived().
@@ -97,13 +97,13 @@ struct Body {
     Scalar inertia = 0; ///< moment of inertia about the centre of mass, kg·m²
     Scalar invMass = 0; ///< 1/mass, or 0 for a fixed body, 1/kg
     Scalar invInertia = 0; ///< 1/inertia, or 0 for a fixed body, 1/(kg·m²)
-    BodyGeometry geometry;
+    BodyGeometry geometry; ///< outline, convex pieces and bounds in the body frame
 
     // Collision state, kept up to date by the simulation; not part of the scene file.
     bool colliding = false; ///< in contact with another body at the end of the last step
     std::int64_t collisionCount = 0; ///< contact-begin events this body has taken part in
 
-    bool operator==(const Body&) const = default;
+    bool operator==(const Body&) const = default; ///< memberwise equality
 
     /// Recomputes area, mass, inertia, their inverses and the geometry from shape, massSpec and
     /// fixed. Precondition: the shape is valid (positive sizes, a simple polygon).

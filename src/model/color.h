@@ -11,11 +11,11 @@ namespace impetus::model {
 
 /// An sRGB colour, 8 bits per channel; written in scenes as "#rrggbb".
 struct Color {
-    std::uint8_t r = 0x3b;
-    std::uint8_t g = 0x82;
-    std::uint8_t b = 0xf6;
+    std::uint8_t r = 0x3b; ///< red, 0–255
+    std::uint8_t g = 0x82; ///< green, 0–255
+    std::uint8_t b = 0xf6; ///< blue, 0–255
 
-    bool operator==(const Color&) const = default;
+    bool operator==(const Color&) const = default; ///< memberwise equality
 
     /// "#rrggbb", lower case.
     std::string toHex() const;

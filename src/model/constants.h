@@ -77,7 +77,7 @@ inline constexpr int kMaxSolverSubsteps = 240;
 /// for positions. Box2D's defaults, which keep a 10-box stack standing at 60 Hz; at 240 Hz they
 /// are generous.
 inline constexpr int kVelocityIterations = 8;
-inline constexpr int kPositionIterations = 3;
+inline constexpr int kPositionIterations = 3; ///< see kVelocityIterations
 
 /// The impact pass resolves at most this many impacts per contact point per step, so a chain of
 /// bodies in mutual contact (Newton's cradle, a struck stack) ends in bounded time; what is left

@@ -17,8 +17,8 @@ enum class JointType {
 
 /// A joint between body A and body B, or between body A and the world (bodyB nullopt).
 struct Joint {
-    JointType type = JointType::Pin;
-    BodyId bodyA;
+    JointType type = JointType::Pin; ///< pin or rod
+    BodyId bodyA; ///< the first body
     std::optional<BodyId> bodyB; ///< nullopt: attached to the world
     /// Pin only: the hinge point in world coordinates as the scene gave it, m.
     Vec2 worldAnchor = Vec2::Zero();
@@ -33,7 +33,7 @@ struct Joint {
     /// Solver state, not part of the scene file: the impulse the joint applied in the last step
     /// (pin: the 2D impulse; rod: x holds the impulse along the rod), N·s. Warm-starts the next.
     Vec2 impulse = Vec2::Zero();
-    bool operator==(const Joint&) const = default;
+    bool operator==(const Joint&) const = default; ///< memberwise equality
 };
 
 } // namespace impetus::model

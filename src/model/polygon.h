@@ -24,8 +24,8 @@ enum class PolygonIssueKind {
 /// One reason a polygon is refused. `message` reads well after a JSON path and a colon, e.g.
 /// "polygon self-intersects (edges 1 and 3)". Vertex and edge numbers are 0-based, like JSON arrays.
 struct PolygonIssue {
-    PolygonIssueKind kind;
-    std::string message;
+    PolygonIssueKind kind; ///< which rule the polygon breaks
+    std::string message; ///< the reason in words, naming vertices or edges
 };
 
 /// Checks that `vertices` form a simple polygon: at least 3 distinct, finite vertices, non-zero

@@ -22,18 +22,18 @@ inline constexpr std::string_view kSceneFormatName = "impetus-scene";
 /// One problem in a scene: the JSON path (e.g. "bodies[2].shape.vertices", or "(root)" for the
 /// document itself) and the reason. toString() gives "path: reason".
 struct SceneProblem {
-    std::string path;
-    std::string reason;
-    std::string toString() const { return path + ": " + reason; }
-    bool operator==(const SceneProblem&) const = default;
+    std::string path; ///< where in the document, e.g. "bodies[2].shape.vertices"
+    std::string reason; ///< what is wrong there, in words
+    std::string toString() const { return path + ": " + reason; } ///< "path: reason"
+    bool operator==(const SceneProblem&) const = default; ///< memberwise equality
 };
 
 /// The outcome of reading a scene: a complete world, or no world and every problem found.
 /// Never a partial world.
 struct SceneLoadResult {
-    std::optional<World> world;
-    std::vector<SceneProblem> problems;
-    bool ok() const { return world.has_value(); }
+    std::optional<World> world; ///< the scene, when it was read without a problem
+    std::vector<SceneProblem> problems; ///< every problem found; empty when `world` is present
+    bool ok() const { return world.has_value(); } ///< true when the scene was read
 };
 
 /// Parses and validates scene JSON text. Every body's derived data is computed (Body::updateDerived),

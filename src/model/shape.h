@@ -13,21 +13,21 @@ namespace impetus::model {
 /// A disc of radius `radius` (m), centred on the body's centre of mass.
 struct Circle {
     Scalar radius = 0.5; ///< m, > 0
-    bool operator==(const Circle&) const = default;
+    bool operator==(const Circle&) const = default; ///< memberwise equality
 };
 
 /// An ellipse with semi-axes `radiusX` and `radiusY` (m) along the body's x and y axes.
 struct Ellipse {
     Scalar radiusX = 0.5; ///< semi-axis along body x, m, > 0
     Scalar radiusY = 0.25; ///< semi-axis along body y, m, > 0
-    bool operator==(const Ellipse&) const = default;
+    bool operator==(const Ellipse&) const = default; ///< memberwise equality
 };
 
 /// An axis-aligned (in the body frame) rectangle of `width` × `height` (m), centred on the body.
 struct Box {
     Scalar width = 1.0; ///< m, > 0
     Scalar height = 1.0; ///< m, > 0
-    bool operator==(const Box&) const = default;
+    bool operator==(const Box&) const = default; ///< memberwise equality
 };
 
 /// A simple polygon, convex or concave, winding either way. `vertices` are kept exactly as the
@@ -35,7 +35,7 @@ struct Box {
 /// centroid when it builds the body's geometry (see BodyGeometry).
 struct Polygon {
     std::vector<Vec2> vertices; ///< m, in the body's own frame
-    bool operator==(const Polygon&) const = default;
+    bool operator==(const Polygon&) const = default; ///< memberwise equality
 };
 
 /// One of the four shapes.

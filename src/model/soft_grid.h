@@ -23,7 +23,7 @@ struct SoftSpring {
     Scalar stiffness = 0; ///< k, N/m
     Scalar damping = 0; ///< c, N·s/m
     bool diagonal = false; ///< a shear spring (to a diagonal neighbour), else structural
-    bool operator==(const SoftSpring&) const = default;
+    bool operator==(const SoftSpring&) const = default; ///< memberwise equality
 };
 
 /// The grid springs of one lattice direction laid out over the lattice's cells, for the force
@@ -40,7 +40,7 @@ struct SoftSpringField {
     std::vector<Scalar> stiffness; ///< per cell (columns × rows, row-major): k, N/m
     std::vector<Scalar> damping; ///< per cell: c, N·s/m
     std::vector<Scalar> restLength; ///< per cell: L₀, m
-    bool operator==(const SoftSpringField&) const = default;
+    bool operator==(const SoftSpringField&) const = default; ///< memberwise equality
 };
 
 /// The grid of one soft body. Ellipse i sits in cell cells[i] = (column, row) of a columns × rows
@@ -50,9 +50,9 @@ struct SoftGrid {
     BodyId body; ///< the owning body (World::bodies index)
 
     // What the grid was built from. When the body's definition no longer matches, it is rebuilt.
-    Shape shape;
-    MassSpec massSpec;
-    SoftSettings settings;
+    Shape shape; ///< the body's shape the grid fills
+    MassSpec massSpec; ///< the body's mass choice the ellipses share
+    SoftSettings settings; ///< the body's soft-mode settings
 
     /// The density actually used, 1/m²: settings.ellipsesPerSquareMeter, or the value the auto
     /// measurement chose when settings.autoDensity.
@@ -74,7 +74,7 @@ struct SoftGrid {
     std::vector<std::int32_t> cellEllipse; ///< columns × rows, row-major: ellipse index or −1
     std::vector<std::int32_t> ellipseCell; ///< per ellipse: its cell, row·columns + column
     std::vector<Vec2> restPositions; ///< ellipse centres relative to restCentre, body frame, m
-    std::vector<SoftSpring> springs;
+    std::vector<SoftSpring> springs; ///< every grid spring, structural and shear
     /// The same springs by direction (right, up, up-right, up-left), laid out on the lattice.
     std::array<SoftSpringField, 4> springFields;
 
@@ -85,7 +85,7 @@ struct SoftGrid {
     /// (the editor), and its grid is placed again as a rigid copy of the new state.
     BodyState ownerState;
 
-    bool operator==(const SoftGrid&) const = default;
+    bool operator==(const SoftGrid&) const = default; ///< memberwise equality
 
     /// Number of ellipses.
     std::size_t size() const { return restPositions.size(); }

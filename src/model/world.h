@@ -34,10 +34,10 @@ std::optional<IntegratorKind> integratorFromName(std::string_view name);
 /// World settings (scene key `world`).
 struct WorldSettings {
     Vec2 gravity = Vec2(0, -constants::kStandardGravity); ///< m/s²
-    IntegratorKind integrator = IntegratorKind::Rk4;
+    IntegratorKind integrator = IntegratorKind::Rk4; ///< the integrator of the smooth forces
     Scalar timeStep = constants::kDefaultTimeStep; ///< the fixed step h, s (1/240 s)
     Scalar drag = 0; ///< Stokes coefficient b in F = −b·v on every dynamic body, N·s/m
-    bool operator==(const WorldSettings&) const = default;
+    bool operator==(const WorldSettings&) const = default; ///< memberwise equality
 };
 
 /// Two convex pieces that were in contact, or close enough for a speculative contact, at the end
@@ -47,23 +47,23 @@ struct WorldSettings {
 struct alignas(64) ContactRecord {
     BodyId bodyA; ///< bodyA.index < bodyB.index
     std::uint32_t pieceA = 0; ///< convex piece of body A (0 for round shapes)
-    BodyId bodyB;
-    std::uint32_t pieceB = 0;
+    BodyId bodyB; ///< the other body
+    std::uint32_t pieceB = 0; ///< convex piece of body B (0 for round shapes)
     std::uint8_t pointCount = 0; ///< 1 or 2
     bool touching = false; ///< really touching (not only speculative)
     std::array<std::uint32_t, 2> featureIds{}; ///< which features touched, per point
     std::array<Scalar, 2> normalImpulses{}; ///< accumulated normal impulse per point, N·s
     std::array<Scalar, 2> tangentImpulses{}; ///< accumulated friction impulse per point, N·s
-    bool operator==(const ContactRecord&) const = default;
+    bool operator==(const ContactRecord&) const = default; ///< memberwise equality
 };
 static_assert(sizeof(ContactRecord) == 64);
 
 /// A whole scene and its simulated time.
 struct World {
-    WorldSettings settings;
-    std::vector<Body> bodies;
-    std::vector<Spring> springs;
-    std::vector<Joint> joints;
+    WorldSettings settings; ///< gravity, integrator, time step, drag
+    std::vector<Body> bodies; ///< in scene order; BodyId indexes them
+    std::vector<Spring> springs; ///< in scene order
+    std::vector<Joint> joints; ///< in scene order
     Scalar time = 0; ///< simulated time since the scene was loaded, s
     std::int64_t stepCount = 0; ///< fixed steps taken since the scene was loaded
     std::int64_t collisionCount = 0; ///< contact-begin events since the scene was loaded
@@ -73,14 +73,14 @@ struct World {
     /// file. Built and kept up to date by controller::prepareSoftBodies (Simulation::step calls it).
     std::vector<SoftGrid> softBodies;
 
-    bool operator==(const World&) const = default;
+    bool operator==(const World&) const = default; ///< memberwise equality
 
     /// The id of the body called `name`, if any.
     std::optional<BodyId> findBody(std::string_view name) const;
 
     /// The body with id `id`. Precondition: id.index < bodies.size().
     Body& body(BodyId id) { return bodies[id.index]; }
-    const Body& body(BodyId id) const { return bodies[id.index]; }
+    const Body& body(BodyId id) const { return bodies[id.index]; } ///< see the overload above
 
     /// The grid of soft body `id`, or nullptr when it has none (rigid, or not prepared yet).
     const SoftGrid* softGrid(BodyId id) const;

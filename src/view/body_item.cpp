@@ -49,20 +49,33 @@ BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* par
     else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
         m_radiusLine = QLineF(0, 0, ellipse->radiusX, 0);
 
-    m_own = lookFor(toQColor(body.color), body.fixed);
-    m_red = lookFor(QColor(constants::kCollidingRed, constants::kCollidingGreen, constants::kCollidingBlue),
-                    body.fixed);
+    m_color = toQColor(body.color);
+    m_fixed = body.fixed;
+    setLook(CanvasLook{});
     setPose(body.state);
     setColliding(body.colliding);
 }
 
-BodyItem::Look BodyItem::lookFor(const QColor& color, bool fixed)
+void BodyItem::setLook(const CanvasLook& look)
+{
+    m_lineScale = look.lineScale;
+    m_own = lookFor(m_color, m_fixed, look);
+    m_red = lookFor(QColor(constants::kCollidingRed, constants::kCollidingGreen, constants::kCollidingBlue), m_fixed,
+                    look);
+    // Red against green alone is lost on a colour-blind student: the hatch says "colliding" too.
+    if (look.hatchColliding)
+        m_red.hatch = QBrush(look.collidingHatchColor, Qt::DiagCrossPattern);
+    update();
+}
+
+BodyItem::Look BodyItem::lookFor(const QColor& color, bool fixed, const CanvasLook& canvasLook)
 {
     Look look;
     look.fill = QBrush(fixed ? color.darker(constants::kFixedFillDarkerFactor) : color);
     if (fixed)
         look.hatch = QBrush(color.darker(constants::kFixedHatchDarkerFactor), Qt::BDiagPattern);
-    look.pen = QPen(color.darker(constants::kOutlineDarkerFactor), constants::kOutlineWidthPx);
+    look.pen = QPen(canvasLook.uniformOutline ? canvasLook.outlineColor : color.darker(constants::kOutlineDarkerFactor),
+                    constants::kOutlineWidthPx * canvasLook.lineScale);
     look.pen.setCosmetic(true);
     look.pen.setJoinStyle(Qt::RoundJoin);
     return look;
@@ -135,7 +148,7 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
     if (!m_radiusLine.isNull())
         painter->drawLine(m_radiusLine);
     if (m_highlighted) {
-        QPen selection(constants::kSelectionColor, constants::kSelectionWidthPx, Qt::DashLine);
+        QPen selection(constants::kSelectionColor, constants::kSelectionWidthPx * m_lineScale, Qt::DashLine);
         selection.setCosmetic(true);
         painter->setPen(selection);
         painter->drawPath(m_outline);

@@ -3,6 +3,7 @@
 /// The picture of one body on the canvas.
 
 #include "model/body.h"
+#include "view/canvas_look.h"
 
 #include <QBrush>
 #include <QGraphicsItem>
@@ -49,6 +50,10 @@ public:
     /// Draws a selection outline over the body while `on`.
     void setHighlighted(bool on);
 
+    /// Draws with `look`'s line widths and outlines, and hatches the collision red when it says so
+    /// (projector mode).
+    void setLook(const CanvasLook& look);
+
     /// Whether the selection outline is drawn.
     bool isHighlighted() const { return m_highlighted; }
 
@@ -73,7 +78,11 @@ private:
         QBrush hatch; ///< Qt::NoBrush unless the body is fixed
         QPen pen;
     };
-    static Look lookFor(const QColor& color, bool fixed);
+    static Look lookFor(const QColor& color, bool fixed, const CanvasLook& canvasLook);
+
+    QColor m_color; ///< the body's own colour
+    bool m_fixed = false;
+    double m_lineScale = 1; ///< CanvasLook::lineScale
 
     Look m_own; ///< in the body's colour
     Look m_red; ///< while colliding

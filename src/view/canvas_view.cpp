@@ -91,7 +91,7 @@ QString gridLabel(double value, double spacing)
         return QStringLiteral("0");
     // As many decimals as the spacing needs, and no more: 0.05 m spacing shows "0.15 m".
     const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(spacing) - 1e-9)), 0, 6);
-    return CanvasView::tr("%1 m").arg(value, 0, 'f', decimals);
+    return CanvasView::tr("%L1 m").arg(value, 0, 'f', decimals);
 }
 
 } // namespace
@@ -210,7 +210,30 @@ void CanvasView::rebuildItems()
         if (joint.type == model::JointType::Rod && !joint.bodyB)
             m_scene->addItem(new AnchorItem(b));
     }
+    applyLookToItems();
     showSelection();
+}
+
+void CanvasView::setLook(const CanvasLook& look)
+{
+    m_look = look;
+    applyLookToItems();
+    resetCachedContent();
+    viewport()->update();
+}
+
+void CanvasView::applyLookToItems()
+{
+    for (QGraphicsItem* item : m_scene->items()) {
+        if (auto* body = qgraphicsitem_cast<BodyItem*>(item))
+            body->setLook(m_look);
+        else if (auto* spring = qgraphicsitem_cast<SpringItem*>(item))
+            spring->setLineScale(m_look.lineScale);
+        else if (auto* anchor = qgraphicsitem_cast<AnchorItem*>(item))
+            anchor->setLineScale(m_look.lineScale);
+        else if (auto* joint = qgraphicsitem_cast<JointItem*>(item))
+            joint->setLineScale(m_look.lineScale);
+    }
 }
 
 void CanvasView::frameScene()
@@ -620,16 +643,16 @@ void CanvasView::drawForeground(QPainter* painter, const QRectF&)
 void CanvasView::drawBackground(QPainter* painter, const QRectF& rect)
 {
     painter->save();
-    painter->fillRect(rect, constants::kBackgroundColor);
+    painter->fillRect(rect, m_look.background);
 
     const double scale = pixelsPerMetre();
     if (scale > 0 && std::isfinite(scale)) {
         const GridSpacing grid = gridSpacingFor(constants::kMinimumGridSpacingPx / scale);
         // Crisp one-pixel lines: antialiasing would smear them over two pixel rows.
         painter->setRenderHint(QPainter::Antialiasing, false);
-        QPen minorPen(constants::kMinorGridColor, 0);
-        QPen majorPen(constants::kMajorGridColor, 0);
-        QPen axisPen(constants::kAxisColor, 0);
+        QPen minorPen(m_look.minorGrid, 0);
+        QPen majorPen(m_look.majorGrid, 0);
+        QPen axisPen(m_look.axis, 0);
         const auto penFor = [&](long long index) -> const QPen& {
             if (index == 0)
                 return axisPen;
@@ -672,9 +695,9 @@ void CanvasView::drawGridLabels(QPainter* painter, const QRectF& rect, double sp
     painter->save();
     painter->resetTransform();
     QFont font = painter->font();
-    font.setPointSizeF(constants::kGridLabelPointSize);
+    font.setPointSizeF(constants::kGridLabelPointSize * m_look.gridLabelScale);
     painter->setFont(font);
-    painter->setPen(constants::kGridLabelColor);
+    painter->setPen(m_look.gridLabel);
     const QRectF pixelRect = toPixels.mapRect(rect);
     const QRectF visiblePixels = toPixels.mapRect(visible);
     const double pad = constants::kGridLabelPaddingPx;

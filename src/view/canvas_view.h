@@ -3,6 +3,7 @@
 /// The canvas: the world drawn in metres with y up, and the editing tools that act on it.
 
 #include "model/body.h"
+#include "view/canvas_look.h"
 #include "view/selection.h"
 #include "view/tools/tool.h"
 
@@ -133,6 +134,12 @@ public:
     /// The last message shown by showMessage().
     QString lastMessage() const { return m_lastMessage; }
 
+    /// How the canvas draws (line widths, grid colours, hatched collisions): the normal look, or
+    /// projector mode's.
+    const CanvasLook& look() const { return m_look; }
+    /// Draws with `look` from now on, items and background alike.
+    void setLook(const CanvasLook& look);
+
 public slots:
     /// Fits frameRect() into the viewport, keeping the aspect ratio, with y up.
     void frameWorld();
@@ -191,6 +198,8 @@ private:
     /// and strain when they are shown.
     void syncSoftBody(std::size_t i);
     void drawGridLabels(QPainter* painter, const QRectF& rect, double spacing, int linesPerMajor) const;
+    /// Hands m_look's line scale and outlines to every item.
+    void applyLookToItems();
 
     const SimulationRunner& m_runner;
     SceneDocument* m_document = nullptr;
@@ -212,6 +221,7 @@ private:
     bool m_panning = false;
     QPointF m_lastPanPos; ///< px
     QString m_lastMessage;
+    CanvasLook m_look;
 };
 
 } // namespace impetus::view

@@ -37,10 +37,16 @@ void JointItem::setHighlighted(bool on)
     update();
 }
 
+void JointItem::setLineScale(double scale)
+{
+    prepareGeometryChange();
+    m_lineScale = scale;
+}
+
 QRectF JointItem::boundingRect() const
 {
     if (m_type == model::JointType::Pin) {
-        const qreal r = constants::kPinMarkerRadiusPx + constants::kSelectionWidthPx;
+        const qreal r = (constants::kPinMarkerRadiusPx + constants::kSelectionWidthPx) * m_lineScale;
         return QRectF(-r, -r, 2 * r, 2 * r);
     }
     return QRectF(m_a, m_b).normalized();
@@ -50,16 +56,17 @@ void JointItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
 {
     const QColor color = m_highlighted ? constants::kSelectionColor : constants::kJointColor;
     if (m_type == model::JointType::Pin) {
-        painter->setPen(QPen(color, m_highlighted ? constants::kSelectionWidthPx : constants::kOutlineWidthPx));
+        painter->setPen(
+            QPen(color, (m_highlighted ? constants::kSelectionWidthPx : constants::kOutlineWidthPx) * m_lineScale));
         painter->setBrush(constants::kBackgroundColor);
-        const qreal r = constants::kPinMarkerRadiusPx;
+        const qreal r = constants::kPinMarkerRadiusPx * m_lineScale;
         painter->drawEllipse(QPointF(0, 0), r, r);
         painter->setPen(Qt::NoPen);
         painter->setBrush(color);
         painter->drawEllipse(QPointF(0, 0), r * constants::kPinDotFraction, r * constants::kPinDotFraction);
         return;
     }
-    QPen pen(color, constants::kRodWidthPx);
+    QPen pen(color, constants::kRodWidthPx * m_lineScale);
     pen.setCosmetic(true);
     pen.setCapStyle(Qt::RoundCap);
     painter->setPen(pen);

@@ -29,6 +29,10 @@ public:
     /// Whether the joint is drawn as selected.
     bool isHighlighted() const { return m_highlighted; }
 
+    /// Draws lines and the pin's marker `scale` times their normal size (CanvasLook::lineScale,
+    /// projector mode).
+    void setLineScale(double scale);
+
     /// Pin: the marker's box in pixels around the hinge. Rod: the line's box in the scene, m.
     QRectF boundingRect() const override;
     /// The ring (pin) or the line (rod).
@@ -41,6 +45,7 @@ private:
     QPointF m_a; ///< rod: first end, scene m
     QPointF m_b; ///< rod: second end, scene m
     bool m_highlighted = false;
+    double m_lineScale = 1;
 };
 
 } // namespace impetus::view

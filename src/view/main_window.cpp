@@ -6,7 +6,9 @@
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
 #include "view/graph_panel.h"
+#include "view/language.h"
 #include "view/pace_indicator.h"
+#include "view/projector_mode.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
@@ -115,6 +117,10 @@ MainWindow::MainWindow(QWidget* parent)
         resize(constants::kDefaultWindowWidth, constants::kDefaultWindowHeight);
     restoreState(settings.value(kWindowStateKey).toByteArray());
     m_snapAction->setChecked(settings.value(kSnapKey, false).toBool());
+    // View › Projector Mode (F11) and View › Language, after the geometry: projector mode, when
+    // it was left on, goes full screen again.
+    new ProjectorMode(*this, *m_canvas);
+    addLanguageMenu(*this);
 
     m_canvas->setFocus();
     updateTitle();
@@ -822,16 +828,16 @@ void MainWindow::updateStepAction()
 void MainWindow::updateStatus()
 {
     const model::World& world = m_document->world();
-    m_timeLabel->setText(tr("t = %1 s").arg(world.time, 0, 'f', 3));
+    m_timeLabel->setText(tr("t = %L1 s").arg(world.time, 0, 'f', 3));
     const controller::Energy energy = controller::computeEnergy(world);
-    m_energyPartsLabel->setText(tr("K = %1 J  U = %2 J  elastic = %3 J")
+    m_energyPartsLabel->setText(tr("K = %L1 J  U = %L2 J  elastic = %L3 J")
                                     .arg(energy.kinetic, 0, 'f', 3)
                                     .arg(energy.potential, 0, 'f', 3)
                                     .arg(energy.elastic, 0, 'f', 3));
-    m_energyLabel->setText(tr("E = %1 J").arg(energy.total(), 0, 'f', 3));
+    m_energyLabel->setText(tr("E = %L1 J").arg(energy.total(), 0, 'f', 3));
     const Vec2 momentum = controller::linearMomentum(world);
-    m_momentumLabel->setText(tr("p = (%1, %2) kg·m/s").arg(momentum.x(), 0, 'f', 3).arg(momentum.y(), 0, 'f', 3));
-    m_collisionLabel->setText(tr("Collisions: %1").arg(world.collisionCount));
+    m_momentumLabel->setText(tr("p = (%L1, %L2) kg·m/s").arg(momentum.x(), 0, 'f', 3).arg(momentum.y(), 0, 'f', 3));
+    m_collisionLabel->setText(tr("Collisions: %L1").arg(world.collisionCount));
 }
 
 void MainWindow::compareSelectedWithRigid()
@@ -885,7 +891,7 @@ void MainWindow::updateSoftStatus()
     for (const model::SoftGrid& grid : world.softBodies) {
         const model::Body& body = world.body(grid.body);
         const bool automatic = body.soft && body.soft->autoDensity;
-        densities << (automatic ? tr("%1: %2/m² (auto)") : tr("%1: %2/m²"))
+        densities << (automatic ? tr("%1: %L2/m² (auto)") : tr("%1: %L2/m²"))
                          .arg(QString::fromStdString(body.name))
                          .arg(grid.ellipsesPerSquareMeter, 0, 'g', 4);
     }

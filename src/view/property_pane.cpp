@@ -887,8 +887,8 @@ void PropertyPane::load(const model::World& world)
         m_softGridText.clear();
         if (const model::SoftGrid* grid = world.softGrid(model::BodyId{static_cast<std::uint32_t>(body)})) {
             const bool automatic = m_body.soft && m_body.soft->autoDensity;
-            m_softGridText = (automatic ? tr("%1 ellipses at %2 per m², chosen by “auto” on this computer")
-                                        : tr("%1 ellipses at %2 per m²"))
+            m_softGridText = (automatic ? tr("%L1 ellipses at %L2 per m², chosen by “auto” on this computer")
+                                        : tr("%L1 ellipses at %L2 per m²"))
                                  .arg(grid->size())
                                  .arg(grid->ellipsesPerSquareMeter, 0, 'g', 4);
         }

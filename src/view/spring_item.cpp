@@ -51,7 +51,14 @@ void SpringItem::setHighlighted(bool on)
         return;
     m_highlighted = on;
     m_pen.setColor(on ? constants::kSelectionColor : constants::kSpringColor);
-    m_pen.setWidthF(on ? constants::kSelectionWidthPx : constants::kOutlineWidthPx);
+    m_pen.setWidthF((on ? constants::kSelectionWidthPx : constants::kOutlineWidthPx) * m_lineScale);
+    update();
+}
+
+void SpringItem::setLineScale(double scale)
+{
+    m_lineScale = scale;
+    m_pen.setWidthF((m_highlighted ? constants::kSelectionWidthPx : constants::kOutlineWidthPx) * m_lineScale);
     update();
 }
 
@@ -75,18 +82,24 @@ AnchorItem::AnchorItem(const QPointF& position, QGraphicsItem* parent)
     setZValue(2);
 }
 
+void AnchorItem::setLineScale(double scale)
+{
+    prepareGeometryChange();
+    m_lineScale = scale;
+}
+
 QRectF AnchorItem::boundingRect() const
 {
-    const qreal r = constants::kAnchorMarkerRadiusPx + constants::kOutlineWidthPx;
+    const qreal r = (constants::kAnchorMarkerRadiusPx + constants::kOutlineWidthPx) * m_lineScale;
     return QRectF(-r, -r, 2 * r, 2 * r);
 }
 
 void AnchorItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
-    QPen pen(constants::kSpringColor, constants::kOutlineWidthPx);
+    QPen pen(constants::kSpringColor, constants::kOutlineWidthPx * m_lineScale);
     painter->setPen(pen);
     painter->setBrush(constants::kBackgroundColor);
-    const qreal r = constants::kAnchorMarkerRadiusPx;
+    const qreal r = constants::kAnchorMarkerRadiusPx * m_lineScale;
     painter->drawEllipse(QPointF(0, 0), r, r);
     painter->setPen(Qt::NoPen);
     painter->setBrush(constants::kSpringColor);

@@ -28,6 +28,9 @@ public:
     /// Whether the spring is drawn as selected.
     bool isHighlighted() const { return m_highlighted; }
 
+    /// Draws the line `scale` times its normal width (CanvasLook::lineScale, projector mode).
+    void setLineScale(double scale);
+
     /// The zig-zag's bounding box in scene coordinates, m.
     QRectF boundingRect() const override;
     /// The zig-zag, with a cosmetic pen.
@@ -40,6 +43,7 @@ private:
     QPainterPath m_path;
     QPen m_pen;
     bool m_highlighted = false;
+    double m_lineScale = 1;
 };
 
 /// A small ring-and-dot marker at a fixed world point (a spring's world anchor). It ignores the
@@ -52,12 +56,18 @@ public:
     /// A marker at the scene point `position`, m.
     explicit AnchorItem(const QPointF& position, QGraphicsItem* parent = nullptr);
 
+    /// Draws the marker `scale` times its normal size (CanvasLook::lineScale, projector mode).
+    void setLineScale(double scale);
+
     /// The marker's box, px around its position.
     QRectF boundingRect() const override;
     /// A ring with a dot in its centre.
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
     /// AnchorItem::Type, for qgraphicsitem_cast.
     int type() const override { return Type; }
+
+private:
+    double m_lineScale = 1;
 };
 
 } // namespace impetus::view

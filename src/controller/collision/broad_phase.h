@@ -19,9 +19,9 @@ struct BroadPhaseProxy {
 
 /// A candidate pair: indices into the proxy list, first < second.
 struct ProxyPair {
-    std::uint32_t first = 0;
-    std::uint32_t second = 0;
-    auto operator<=>(const ProxyPair&) const = default;
+    std::uint32_t first = 0; ///< the lower proxy index
+    std::uint32_t second = 0; ///< the higher proxy index
+    auto operator<=>(const ProxyPair&) const = default; ///< by first, then second
 };
 
 /// Sort-and-sweep broad phase, with a cache of "fat" boxes that makes a step in which little has

@@ -16,8 +16,9 @@ namespace impetus::controller {
 
 /// One convex piece of one body, placed in the world.
 struct ColliderPiece {
+    /// Which narrow-phase routine handles the piece.
     enum class Kind : std::uint8_t { Polygon, Circle, Ellipse };
-    Kind kind = Kind::Polygon;
+    Kind kind = Kind::Polygon; ///< the piece's shape
     std::uint32_t body = 0; ///< index into World::bodies (for a soft body's ellipse: its owner)
     /// index into the body's convex pieces (0 for round shapes), or a soft body's ellipse index
     std::uint32_t piece = 0;
@@ -43,7 +44,9 @@ public:
     /// With `tasks`, each half of the bodies is placed on its own thread (the same result).
     void build(const model::World& world, const std::vector<Scalar>& margins, TaskPair* tasks = nullptr);
 
+    /// Every piece, by body in index order, then by piece.
     const std::vector<ColliderPiece>& pieces() const { return m_pieces; }
+    /// The bounding box of each piece (same index as pieces()), enlarged by its margin, m.
     const std::vector<Aabb>& boxes() const { return m_boxes; }
 
     /// Piece i as a shape the narrow phase takes.

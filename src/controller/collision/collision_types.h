@@ -11,8 +11,8 @@ namespace impetus::controller {
 
 /// An axis-aligned bounding box, m.
 struct Aabb {
-    Vec2 lower = Vec2::Zero();
-    Vec2 upper = Vec2::Zero();
+    Vec2 lower = Vec2::Zero(); ///< the corner with the smallest x and y, m
+    Vec2 upper = Vec2::Zero(); ///< the corner with the largest x and y, m
 
     /// True when the boxes overlap or touch.
     bool overlaps(const Aabb& other) const
@@ -34,14 +34,14 @@ struct ContactPoint {
     /// Signed distance between the surfaces along the normal, m: negative when they overlap,
     /// positive for a speculative point (not yet touching, but close enough to matter this step).
     Scalar separation = 0;
-    FeatureId id = 0;
+    FeatureId id = 0; ///< the features that made the point, to match it in the next step
 };
 
 /// Up to two contact points between convex shapes A and B that share one normal.
 struct Manifold {
     /// Unit normal pointing from A to B, world frame.
     Vec2 normal = Vec2::Zero();
-    std::array<ContactPoint, 2> points{};
+    std::array<ContactPoint, 2> points{}; ///< the first `count` are valid
     int count = 0; ///< 0 (no contact), 1 or 2
 };
 

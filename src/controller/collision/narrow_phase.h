@@ -15,8 +15,8 @@ namespace impetus::controller {
 /// A convex polygon in world coordinates: counter-clockwise vertices and the outward unit normal
 /// of each edge (normals[i] belongs to the edge from vertices[i] to vertices[i+1]).
 struct PolygonShape {
-    std::span<const Vec2> vertices;
-    std::span<const Vec2> normals;
+    std::span<const Vec2> vertices; ///< counter-clockwise, world frame, m
+    std::span<const Vec2> normals; ///< outward unit normal of each edge
     Vec2 centroid = Vec2::Zero(); ///< any interior point serves; the centroid is used
 };
 

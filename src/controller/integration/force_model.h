@@ -27,9 +27,14 @@ struct BodyDerivative {
 /// its springs of each direction, and their sum per cell. A caller that evaluates many times keeps
 /// one, so that an evaluation allocates nothing.
 struct ForceScratch {
-    std::vector<Scalar> x, y, vx, vy; ///< per lattice slot: positions (m) and velocities (m/s)
-    std::array<std::vector<Scalar>, 4> fx, fy; ///< per direction and slot: a spring's pull, m/s²
-    std::vector<Scalar> ax, ay; ///< per cell: the springs' acceleration, m/s²
+    std::vector<Scalar> x; ///< per lattice slot: position x, m
+    std::vector<Scalar> y; ///< per lattice slot: position y, m
+    std::vector<Scalar> vx; ///< per lattice slot: velocity x, m/s
+    std::vector<Scalar> vy; ///< per lattice slot: velocity y, m/s
+    std::array<std::vector<Scalar>, 4> fx; ///< per direction and slot: a spring's pull along x, m/s²
+    std::array<std::vector<Scalar>, 4> fy; ///< per direction and slot: a spring's pull along y, m/s²
+    std::vector<Scalar> ax; ///< per cell: the springs' acceleration along x, m/s²
+    std::vector<Scalar> ay; ///< per cell: the springs' acceleration along y, m/s²
     /// Makes every array at least `slots` long (never shrinks).
     void resize(std::size_t slots);
 };

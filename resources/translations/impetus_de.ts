@@ -1,0 +1,1390 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>RotationGesture</name>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+</context>
+<context>
+    <name>Tool</name>
+    <message>
+        <source>box</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <source>Draw box</source>
+        <translation>Rechteck zeichnen</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>Kreis</translation>
+    </message>
+    <message>
+        <source>Draw circle</source>
+        <translation>Kreis zeichnen</translation>
+    </message>
+    <message>
+        <source>ellipse</source>
+        <translation>Ellipse</translation>
+    </message>
+    <message>
+        <source>Draw ellipse</source>
+        <translation>Ellipse zeichnen</translation>
+    </message>
+    <message>
+        <source>Add pin</source>
+        <translation>Gelenk hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add rod</source>
+        <translation>Stange hinzufügen</translation>
+    </message>
+    <message>
+        <source>Click on a body to pin it there: to the body under it, or to the world.</source>
+        <translation>Auf einen Körper klicken, um ihn dort anzuheften: an den Körper darunter oder an die Welt.</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body, or to a point in space, to add a rod.</source>
+        <translation>Von einem Körper zu einem anderen Körper oder zu einem Punkt im Raum ziehen, um eine Stange hinzuzufügen.</translation>
+    </message>
+    <message>
+        <source>a polygon needs at least 3 different corners</source>
+        <translation>ein Polygon braucht mindestens 3 verschiedene Ecken</translation>
+    </message>
+    <message>
+        <source>a corner is not a finite point</source>
+        <translation>eine Ecke ist kein endlicher Punkt</translation>
+    </message>
+    <message>
+        <source>two corners are at the same point</source>
+        <translation>zwei Ecken liegen am selben Punkt</translation>
+    </message>
+    <message>
+        <source>it is too small or flat to have an area</source>
+        <translation>es ist zu klein oder zu flach, um eine Fläche zu haben</translation>
+    </message>
+    <message>
+        <source>its edges cross each other</source>
+        <translation>seine Kanten kreuzen sich</translation>
+    </message>
+    <message>
+        <source>Cannot close the polygon: %1. Move or remove a corner (Backspace), or press Escape to give up.</source>
+        <translation>Das Polygon lässt sich nicht schließen: %1. Eine Ecke verschieben oder entfernen (Rücktaste) oder mit Escape aufgeben.</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>Polygon</translation>
+    </message>
+    <message>
+        <source>Draw polygon</source>
+        <translation>Polygon zeichnen</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Nudge</source>
+        <translation>Fein verschieben</translation>
+    </message>
+    <message>
+        <source>Add spring</source>
+        <translation>Feder hinzufügen</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body, or to a point in space, to add a spring.</source>
+        <translation>Von einem Körper zu einem anderen Körper oder zu einem Punkt im Raum ziehen, um eine Feder hinzuzufügen.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::app::App</name>
+    <message>
+        <source>--size must be WxH with both sides from 1 to %1 pixels, not “%2”</source>
+        <translation>--size muss BxH sein, beide Seiten von 1 bis %1 Pixel, nicht „%2“</translation>
+    </message>
+    <message>
+        <source>--run-for must be a number of seconds ≥ 0, not “%1”</source>
+        <translation>--run-for muss eine Anzahl Sekunden ≥ 0 sein, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--run-for %1 s is %2 steps, more than the %3 allowed</source>
+        <translation>--run-for %1 s sind %2 Schritte, mehr als die erlaubten %3</translation>
+    </message>
+    <message>
+        <source>the simulation produced a non-finite number: body “%1”, by t = %2 s</source>
+        <translation>die Simulation hat eine nicht endliche Zahl ergeben: Körper „%1“, bis t = %2 s</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Impetus, a 2D physics lab for the classroom.</source>
+        <translation>Impetus, ein 2D-Physiklabor für den Unterricht.</translation>
+    </message>
+    <message>
+        <source>Render the canvas to the PNG file FILE and exit.</source>
+        <translation>Die Simulationsfläche in die PNG-Datei DATEI zeichnen und beenden.</translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation>DATEI</translation>
+    </message>
+    <message>
+        <source>With --screenshot: simulate SECONDS first (default 0).</source>
+        <translation>Mit --screenshot: zuerst SEKUNDEN simulieren (Standard 0).</translation>
+    </message>
+    <message>
+        <source>SECONDS</source>
+        <translation>SEKUNDEN</translation>
+    </message>
+    <message>
+        <source>With --screenshot: the image size in pixels (default 1280x720).</source>
+        <translation>Mit --screenshot: die Bildgröße in Pixeln (Standard 1280x720).</translation>
+    </message>
+    <message>
+        <source>WxH</source>
+        <translation>BxH</translation>
+    </message>
+    <message>
+        <source>The scene file to open (default: the example scene).</source>
+        <translation>Die zu öffnende Szenendatei (Standard: die Beispielszene).</translation>
+    </message>
+    <message>
+        <source>expected at most one scene file, got %1</source>
+        <translation>höchstens eine Szenendatei erwartet, %1 erhalten</translation>
+    </message>
+    <message>
+        <source>--run-for and --size need --screenshot</source>
+        <translation>--run-for und --size brauchen --screenshot</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view</name>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::CanvasView</name>
+    <message>
+        <source>Simulation canvas</source>
+        <translation>Simulationsfläche</translation>
+    </message>
+    <message>
+        <source>The bodies, springs and joints of the scene, in metres, y up</source>
+        <translation>Die Körper, Federn und Gelenke der Szene, in Metern, y nach oben</translation>
+    </message>
+    <message>
+        <source>%L1 m</source>
+        <translation>%L1 m</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::Examples</name>
+    <message>
+        <source>Billiards break</source>
+        <translation>Billard-Anstoß</translation>
+    </message>
+    <message>
+        <source>Box stack and overhang</source>
+        <translation>Kistenstapel mit Überhang</translation>
+    </message>
+    <message>
+        <source>Default scene</source>
+        <translation>Standardszene</translation>
+    </message>
+    <message>
+        <source>Block on an incline</source>
+        <translation>Klotz auf der schiefen Ebene</translation>
+    </message>
+    <message>
+        <source>Newton&apos;s cradle</source>
+        <translation>Newtons Wiege</translation>
+    </message>
+    <message>
+        <source>Pendulum</source>
+        <translation>Pendel</translation>
+    </message>
+    <message>
+        <source>Projectile over the ground</source>
+        <translation>Wurf über dem Boden</translation>
+    </message>
+    <message>
+        <source>Pyramid</source>
+        <translation>Pyramide</translation>
+    </message>
+    <message>
+        <source>Soft bodies: rigid and soft side by side</source>
+        <translation>Weiche Körper: starr und weich nebeneinander</translation>
+    </message>
+    <message>
+        <source>Spaceship and asteroids</source>
+        <translation>Raumschiff und Asteroiden</translation>
+    </message>
+    <message>
+        <source>Chain of springs</source>
+        <translation>Federkette</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>The language changes the next time Impetus starts.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von Impetus.</translation>
+    </message>
+    <message>
+        <source>System Language</source>
+        <translation>Systemsprache</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::MainWindow</name>
+    <message>
+        <source>Impetus main window</source>
+        <translation>Impetus-Hauptfenster</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>Start an empty scene</source>
+        <translation>Eine leere Szene beginnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Open a scene file</source>
+        <translation>Eine Szenendatei öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save the scene to its file</source>
+        <translation>Die Szene in ihre Datei speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Save the scene to a new file</source>
+        <translation>Die Szene in eine neue Datei speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selection, and the springs and joints on deleted bodies</source>
+        <translation>Die Auswahl löschen, samt den Federn und Gelenken an gelöschten Körpern</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>&amp;Alles auswählen</translation>
+    </message>
+    <message>
+        <source>&amp;Snap to Grid</source>
+        <translation>Am &amp;Raster einrasten</translation>
+    </message>
+    <message>
+        <source>Place and move points on the grid lines&apos; crossings</source>
+        <translation>Punkte auf die Kreuzungen der Rasterlinien setzen und verschieben</translation>
+    </message>
+    <message>
+        <source>Show Soft-Body &amp;Ellipses</source>
+        <translation>&amp;Ellipsen weicher Körper zeigen</translation>
+    </message>
+    <message>
+        <source>Draw the small ellipses a soft body is made of</source>
+        <translation>Die kleinen Ellipsen zeichnen, aus denen ein weicher Körper besteht</translation>
+    </message>
+    <message>
+        <source>Show Soft-Body S&amp;train</source>
+        <translation>&amp;Dehnung weicher Körper zeigen</translation>
+    </message>
+    <message>
+        <source>Draw a soft body&apos;s springs coloured by strain: blue compressed, grey at rest, red stretched</source>
+        <translation>Die Federn eines weichen Körpers nach Dehnung gefärbt zeichnen: blau gestaucht, grau in Ruhe, rot gedehnt</translation>
+    </message>
+    <message>
+        <source>&amp;Frame Scene</source>
+        <translation>&amp;Ganze Szene zeigen</translation>
+    </message>
+    <message>
+        <source>Zoom to show every body</source>
+        <translation>So zoomen, dass alle Körper zu sehen sind</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Run the simulation (Space)</source>
+        <translation>Die Simulation laufen lassen (Leertaste)</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Advance one time step (→)</source>
+        <translation>Einen Zeitschritt weiter (→)</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Go back to the state at the last Play (R)</source>
+        <translation>Zum Zustand beim letzten Start zurückkehren (R)</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <source>Select, move (drag) and nudge (arrow keys); Ctrl+drag turns</source>
+        <translation>Auswählen, verschieben (ziehen) und fein verschieben (Pfeiltasten); Strg+Ziehen dreht</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>Drag to turn a body or the selection about its centre</source>
+        <translation>Ziehen, um einen Körper oder die Auswahl um seine Mitte zu drehen</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygon</translation>
+    </message>
+    <message>
+        <source>Click the corners; click the first one, press Enter or double-click to close</source>
+        <translation>Die Ecken anklicken; zum Schließen die erste anklicken, Eingabe drücken oder doppelklicken</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <source>Drag from corner to corner</source>
+        <translation>Von Ecke zu Ecke ziehen</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Kreis</translation>
+    </message>
+    <message>
+        <source>Drag from the centre out</source>
+        <translation>Von der Mitte nach außen ziehen</translation>
+    </message>
+    <message>
+        <source>Ellipse</source>
+        <translation>Ellipse</translation>
+    </message>
+    <message>
+        <source>Drag out its bounding box</source>
+        <translation>Das umgebende Rechteck aufziehen</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Feder</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body or to a point</source>
+        <translation>Von einem Körper zu einem anderen Körper oder zu einem Punkt ziehen</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Click on a body to hinge it to the body below or the world</source>
+        <translation>Auf einen Körper klicken, um ihn drehbar an den Körper darunter oder an die Welt zu heften</translation>
+    </message>
+    <message>
+        <source>Rod</source>
+        <translation>Stange</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3</source>
+        <translation>%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Compare Soft with Rigid…</source>
+        <translation>Weich mit starr &amp;vergleichen…</translation>
+    </message>
+    <message>
+        <source>Run the selected soft body rigid and soft for a few seconds and show how far apart they drift</source>
+        <translation>Den ausgewählten weichen Körper einige Sekunden lang starr und weich laufen lassen und zeigen, wie weit die beiden auseinanderdriften</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>Beisp&amp;iele</translation>
+    </message>
+    <message>
+        <source>Run controls</source>
+        <translation>Ablaufsteuerung</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>Starten oder anhalten</translation>
+    </message>
+    <message>
+        <source>Step once</source>
+        <translation>Einen Schritt weiter</translation>
+    </message>
+    <message>
+        <source>Reset to the last Play</source>
+        <translation>Auf den letzten Start zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>Tempo:</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>Simulation speed</source>
+        <translation>Simulationstempo</translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second</source>
+        <translation>Simulierte Sekunden pro echter Sekunde</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Drawing tools</source>
+        <translation>Zeichenwerkzeuge</translation>
+    </message>
+    <message>
+        <source>%1 tool</source>
+        <translation>Werkzeug %1</translation>
+    </message>
+    <message>
+        <source>Attributes</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Simulated time</source>
+        <translation>Simulierte Zeit</translation>
+    </message>
+    <message>
+        <source>Kinetic, potential and elastic energy</source>
+        <translation>Kinetische, potentielle und elastische Energie</translation>
+    </message>
+    <message>
+        <source>Kinetic energy K, gravitational potential energy U (from y = 0) and elastic energy of the springs</source>
+        <translation>Kinetische Energie K, potentielle Energie U im Schwerefeld (ab y = 0) und Spannenergie der Federn</translation>
+    </message>
+    <message>
+        <source>Total energy</source>
+        <translation>Gesamtenergie</translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation>Gesamtimpuls</translation>
+    </message>
+    <message>
+        <source>Collision count</source>
+        <translation>Anzahl der Stöße</translation>
+    </message>
+    <message>
+        <source>Soft bodies</source>
+        <translation>Weiche Körper</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>Open Scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <source>Impetus scenes (*.json);;All files (*)</source>
+        <translation>Impetus-Szenen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The default scene is shown instead.</source>
+        <translation>Stattdessen wird die Standardszene gezeigt.</translation>
+    </message>
+    <message>
+        <source>An empty scene is shown instead.</source>
+        <translation>Stattdessen wird eine leere Szene gezeigt.</translation>
+    </message>
+    <message>
+        <source>The current scene is unchanged.</source>
+        <translation>Die aktuelle Szene bleibt unverändert.</translation>
+    </message>
+    <message>
+        <source>Cannot open scene</source>
+        <translation>Szene kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened. %2</source>
+        <translation>„%1“ konnte nicht geöffnet werden. %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>…and %n more.</source>
+        <translation>
+            <numerusform>…und %n weiteres.</numerusform>
+            <numerusform>…und %n weitere.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The simulation blew up</source>
+        <translation>Die Simulation ist explodiert</translation>
+    </message>
+    <message>
+        <source>Body “%1” got a position or velocity that is not a finite number by t = %2 s.</source>
+        <translation>Körper „%1“ hat bis t = %2 s eine Position oder Geschwindigkeit bekommen, die keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <source>The run stopped at the last finite state. The time step is too large for the stiffest spring or the fastest motion in the scene. Press Reset (R) to go back to where you pressed Play, or Undo (Ctrl+Z); then try a smaller time step or a softer spring.</source>
+        <translation>Der Lauf hat beim letzten endlichen Zustand angehalten. Der Zeitschritt ist zu groß für die steifste Feder oder die schnellste Bewegung der Szene. Mit Zurücksetzen (R) geht es zurück zum Start, oder mit Rückgängig (Strg+Z); dann einen kleineren Zeitschritt oder eine weichere Feder versuchen.</translation>
+    </message>
+    <message>
+        <source>Cannot save scene</source>
+        <translation>Szene kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>The scene could not be saved to “%1”. Nothing was overwritten.</source>
+        <translation>Die Szene konnte nicht in „%1“ gespeichert werden. Nichts wurde überschrieben.</translation>
+    </message>
+    <message>
+        <source>Save Scene</source>
+        <translation>Szene speichern</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved.</source>
+        <translation>„%1“ hat Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Vor dem Weitermachen speichern?</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Pause the simulation (Space)</source>
+        <translation>Die Simulation anhalten (Leertaste)</translation>
+    </message>
+    <message>
+        <source>Running %1 rigid and soft…</source>
+        <translation>%1 läuft starr und weich…</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;th align=right&gt;t (s)&lt;/th&gt;&lt;th align=right&gt;distance (m)&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;th align=right&gt;t (s)&lt;/th&gt;&lt;th align=right&gt;Abstand (m)&lt;/th&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <source>Soft against rigid</source>
+        <translation>Weich gegen starr</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;How far the centre of mass of &lt;b&gt;%1&lt;/b&gt; run soft (%2 ellipses, %3 per m²) drifts from the same body run rigid, over the next %4 s:&lt;/p&gt;&lt;p&gt;RMS %5 m, largest %6 m at t = %7 s.&lt;/p&gt;%8</source>
+        <translation>&lt;p&gt;Wie weit der Schwerpunkt von &lt;b&gt;%1&lt;/b&gt;, weich gerechnet (%2 Ellipsen, %3 pro m²), in den nächsten %4 s vom selben Körper, starr gerechnet, abweicht:&lt;/p&gt;&lt;p&gt;Effektivwert %5 m, höchstens %6 m bei t = %7 s.&lt;/p&gt;%8</translation>
+    </message>
+    <message>
+        <source>%1 — %2 substeps per step</source>
+        <translation>%1 — %2 Teilschritte pro Schritt</translation>
+    </message>
+    <message>
+        <source>One step per step: the grids are stable at this time step.</source>
+        <translation>Ein Teilschritt pro Schritt: Die Gitter sind bei diesem Zeitschritt stabil.</translation>
+    </message>
+    <message>
+        <source>%1[*] — Impetus</source>
+        <translation>%1[*] — Impetus</translation>
+    </message>
+    <message>
+        <source>t = %L1 s</source>
+        <translation>t = %L1 s</translation>
+    </message>
+    <message>
+        <source>K = %L1 J  U = %L2 J  elastic = %L3 J</source>
+        <translation>K = %L1 J  U = %L2 J  elastisch = %L3 J</translation>
+    </message>
+    <message>
+        <source>E = %L1 J</source>
+        <translation>E = %L1 J</translation>
+    </message>
+    <message>
+        <source>p = (%L1, %L2) kg·m/s</source>
+        <translation>p = (%L1; %L2) kg·m/s</translation>
+    </message>
+    <message>
+        <source>Collisions: %L1</source>
+        <translation>Stöße: %L1</translation>
+    </message>
+    <message>
+        <source>%1: %L2/m² (auto)</source>
+        <translation>%1: %L2/m² (automatisch)</translation>
+    </message>
+    <message>
+        <source>%1: %L2/m²</source>
+        <translation>%1: %L2/m²</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::PaceIndicator</name>
+    <message>
+        <source>Speed against real time</source>
+        <translation>Tempo gegenüber Echtzeit</translation>
+    </message>
+    <message>
+        <source>Computing a step…</source>
+        <translation>Ein Schritt wird berechnet…</translation>
+    </message>
+    <message>
+        <source>Running at %1× real time</source>
+        <translation>Läuft mit %1× Echtzeit</translation>
+    </message>
+    <message>
+        <source>Running at %1× real time (speed set to %2×)</source>
+        <translation>Läuft mit %1× Echtzeit (eingestellt: %2×)</translation>
+    </message>
+    <message>
+        <source>Simulated time runs at %1× real time, slower than the %2× asked for.</source>
+        <translation>Die simulierte Zeit läuft mit %1× Echtzeit, langsamer als die gewünschten %2×.</translation>
+    </message>
+    <message>
+        <source>Step (→) is computing one time step in the background. The canvas shows it when it is done; the window keeps working meanwhile.</source>
+        <translation>Schritt (→) berechnet einen Zeitschritt im Hintergrund. Die Fläche zeigt ihn, sobald er fertig ist; das Fenster bleibt solange bedienbar.</translation>
+    </message>
+    <message>
+        <source>No step has been computed yet; the first one has taken %1 s so far.</source>
+        <translation>Noch ist kein Schritt berechnet; der erste hat bisher %1 s gedauert.</translation>
+    </message>
+    <message>
+        <source>One step (%1 ms of simulated time) takes %2 ms to compute; at %3× it may take at most %4 ms.</source>
+        <translation>Ein Schritt (%1 ms simulierte Zeit) braucht %2 ms Rechenzeit; bei %3× dürfte er höchstens %4 ms brauchen.</translation>
+    </message>
+    <message>
+        <source>The last step took %1 ms to compute.</source>
+        <translation>Die Berechnung des letzten Schritts dauerte %1 ms.</translation>
+    </message>
+    <message>
+        <source>The steps being computed now have taken %1 s so far.</source>
+        <translation>Die Schritte, die gerade berechnet werden, haben bisher %1 s gedauert.</translation>
+    </message>
+    <message>
+        <source>The last step — bodies: %1, contacts: %2, impacts: %3. Solving the contacts and joints took %4 ms of its %5 ms.</source>
+        <translation>Der letzte Schritt — Körper: %1, Kontakte: %2, Stöße: %3. Das Lösen der Kontakte und Gelenke dauerte %4 ms von seinen %5 ms.</translation>
+    </message>
+    <message>
+        <source>Soft bodies split each step into %1 substeps. %2</source>
+        <translation>Weiche Körper teilen jeden Schritt in %1 Teilschritte. %2</translation>
+    </message>
+    <message>
+        <source>To make steps faster: use fewer bodies, or give soft bodies fewer ellipses per m².</source>
+        <translation>Für schnellere Schritte: weniger Körper verwenden oder weichen Körpern weniger Ellipsen pro m² geben.</translation>
+    </message>
+    <message>
+        <source>The steps themselves are fast enough: the computer was busy with something else for a moment.</source>
+        <translation>Die Schritte selbst sind schnell genug: Der Computer war kurz mit etwas anderem beschäftigt.</translation>
+    </message>
+    <message>
+        <source>To keep up: use fewer bodies, give soft bodies fewer ellipses per m², make the time step larger, or choose a lower speed.</source>
+        <translation>Um mitzuhalten: weniger Körper verwenden, weichen Körpern weniger Ellipsen pro m² geben, den Zeitschritt vergrößern oder ein niedrigeres Tempo wählen.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::ProjectorMode</name>
+    <message>
+        <source>&amp;Projector Mode</source>
+        <translation>&amp;Projektormodus</translation>
+    </message>
+    <message>
+        <source>Full screen, large text and readouts, thick lines and strong contrast for a projector (F11)</source>
+        <translation>Vollbild, große Schrift und Anzeigen, dicke Linien und starker Kontrast für den Projektor (F11)</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::PropertyPane</name>
+    <message>
+        <source>Attributes</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Shown item</source>
+        <translation>Gezeigtes Objekt</translation>
+    </message>
+    <message>
+        <source>Selection note</source>
+        <translation>Hinweis zur Auswahl</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Unit: %1</source>
+        <translation>Einheit: %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>World settings</source>
+        <translation>Welteinstellungen</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>Change gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>Explicit Euler (euler)</source>
+        <translation>Explizites Euler-Verfahren (euler)</translation>
+    </message>
+    <message>
+        <source>Semi-implicit Euler (semi-implicit-euler)</source>
+        <translation>Halbimplizites Euler-Verfahren (semi-implicit-euler)</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta 4 (rk4)</source>
+        <translation>Runge-Kutta 4 (rk4)</translation>
+    </message>
+    <message>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>Change time step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <source>Time step must be from %1 s to %2 s (got %3 s).</source>
+        <translation>Der Zeitschritt muss zwischen %1 s und %2 s liegen (eingegeben: %3 s).</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Luftwiderstand</translation>
+    </message>
+    <message>
+        <source>N·s/m</source>
+        <translation>N·s/m</translation>
+    </message>
+    <message>
+        <source>Change drag</source>
+        <translation>Luftwiderstand ändern</translation>
+    </message>
+    <message>
+        <source>Body attributes</source>
+        <translation>Eigenschaften des Körpers</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>Resize body</source>
+        <translation>Größe des Körpers ändern</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Semi-axis x</source>
+        <translation>Halbachse x</translation>
+    </message>
+    <message>
+        <source>Semi-axis y</source>
+        <translation>Halbachse y</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Ecken</translation>
+    </message>
+    <message>
+        <source>Polygon vertices in the body&apos;s own frame, in metres</source>
+        <translation>Ecken des Polygons im körpereigenen Koordinatensystem, in Metern</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>Add vertex</source>
+        <translation>Ecke hinzufügen</translation>
+    </message>
+    <message>
+        <source>Insert a vertex halfway along the edge after the current vertex</source>
+        <translation>Eine Ecke in der Mitte der Kante nach der aktuellen Ecke einfügen</translation>
+    </message>
+    <message>
+        <source>Remove vertex</source>
+        <translation>Ecke entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current vertex</source>
+        <translation>Die aktuelle Ecke entfernen</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Move body</source>
+        <translation>Körper verschieben</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Rotate body</source>
+        <translation>Körper drehen</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Change velocity</source>
+        <translation>Geschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <source>Angular velocity</source>
+        <translation>Winkelgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>Change angular velocity</source>
+        <translation>Winkelgeschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <source>Mass given as</source>
+        <translation>Masse angegeben als</translation>
+    </message>
+    <message>
+        <source>Choose whether you give the density or the mass; the other follows from the area</source>
+        <translation>Wählen, ob die Dichte oder die Masse angegeben wird; das andere folgt aus der Fläche</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Dichte</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <source>kg/m²</source>
+        <translation>kg/m²</translation>
+    </message>
+    <message>
+        <source>Change density</source>
+        <translation>Dichte ändern</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Change mass</source>
+        <translation>Masse ändern</translation>
+    </message>
+    <message>
+        <source>Moment of inertia</source>
+        <translation>Trägheitsmoment</translation>
+    </message>
+    <message>
+        <source>kg·m²</source>
+        <translation>kg·m²</translation>
+    </message>
+    <message>
+        <source>Restitution</source>
+        <translation>Stoßzahl</translation>
+    </message>
+    <message>
+        <source>(0–1)</source>
+        <translation>(0–1)</translation>
+    </message>
+    <message>
+        <source>Change restitution</source>
+        <translation>Stoßzahl ändern</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Reibung</translation>
+    </message>
+    <message>
+        <source>(≥ 0)</source>
+        <translation>(≥ 0)</translation>
+    </message>
+    <message>
+        <source>Change friction</source>
+        <translation>Reibung ändern</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Fest</translation>
+    </message>
+    <message>
+        <source>A fixed body has infinite mass: it moves only with the velocity it is given</source>
+        <translation>Ein fester Körper hat unendliche Masse: Er bewegt sich nur mit der Geschwindigkeit, die man ihm gibt</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <source>Soft body</source>
+        <translation>Weicher Körper</translation>
+    </message>
+    <message>
+        <source>Simulate the body as a grid of small ellipses joined by springs</source>
+        <translation>Den Körper als Gitter kleiner, durch Federn verbundener Ellipsen simulieren</translation>
+    </message>
+    <message>
+        <source>Ellipses per square metre</source>
+        <translation>Ellipsen pro Quadratmeter</translation>
+    </message>
+    <message>
+        <source>A number greater than 0, or “auto”</source>
+        <translation>Eine Zahl größer als 0 oder „auto“</translation>
+    </message>
+    <message>
+        <source>a number or “auto”</source>
+        <translation>eine Zahl oder „auto“</translation>
+    </message>
+    <message>
+        <source>Ellipses per m²</source>
+        <translation>Ellipsen pro m²</translation>
+    </message>
+    <message>
+        <source>1/m²</source>
+        <translation>1/m²</translation>
+    </message>
+    <message>
+        <source>Soft grid</source>
+        <translation>Weiches Gitter</translation>
+    </message>
+    <message>
+        <source>Soft stiffness</source>
+        <translation>Steifigkeit (weich)</translation>
+    </message>
+    <message>
+        <source>N/m</source>
+        <translation>N/m</translation>
+    </message>
+    <message>
+        <source>Change soft stiffness</source>
+        <translation>Steifigkeit des weichen Körpers ändern</translation>
+    </message>
+    <message>
+        <source>Soft damping</source>
+        <translation>Dämpfung (weich)</translation>
+    </message>
+    <message>
+        <source>Change soft damping</source>
+        <translation>Dämpfung des weichen Körpers ändern</translation>
+    </message>
+    <message>
+        <source>Spring attributes</source>
+        <translation>Eigenschaften der Feder</translation>
+    </message>
+    <message>
+        <source>Body A</source>
+        <translation>Körper A</translation>
+    </message>
+    <message>
+        <source>Anchor A</source>
+        <translation>Anker A</translation>
+    </message>
+    <message>
+        <source>Move spring end</source>
+        <translation>Federende verschieben</translation>
+    </message>
+    <message>
+        <source>Anchor A (body frame)</source>
+        <translation>Anker A (Körperkoordinaten)</translation>
+    </message>
+    <message>
+        <source>Body B</source>
+        <translation>Körper B</translation>
+    </message>
+    <message>
+        <source>Anchor B</source>
+        <translation>Anker B</translation>
+    </message>
+    <message>
+        <source>Stiffness</source>
+        <translation>Federkonstante</translation>
+    </message>
+    <message>
+        <source>Change spring stiffness</source>
+        <translation>Federkonstante ändern</translation>
+    </message>
+    <message>
+        <source>Damping</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <source>Change spring damping</source>
+        <translation>Dämpfung der Feder ändern</translation>
+    </message>
+    <message>
+        <source>Rest length</source>
+        <translation>Ruhelänge</translation>
+    </message>
+    <message>
+        <source>Change rest length</source>
+        <translation>Ruhelänge ändern</translation>
+    </message>
+    <message>
+        <source>Joint attributes</source>
+        <translation>Eigenschaften des Gelenks</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Hinge</source>
+        <translation>Drehpunkt</translation>
+    </message>
+    <message>
+        <source>Move hinge</source>
+        <translation>Drehpunkt verschieben</translation>
+    </message>
+    <message>
+        <source>Move rod end</source>
+        <translation>Stangenende verschieben</translation>
+    </message>
+    <message>
+        <source>Hinge (world point)</source>
+        <translation>Drehpunkt (Weltpunkt)</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>The size or density is too extreme to simulate (mass %1 kg, moment of inertia %2 kg·m²).</source>
+        <translation>Größe oder Dichte sind zu extrem für die Simulation (Masse %1 kg, Trägheitsmoment %2 kg·m²).</translation>
+    </message>
+    <message>
+        <source>A rod needs two different ends: both anchors are at the same point.</source>
+        <translation>Eine Stange braucht zwei verschiedene Enden: Beide Anker liegen am selben Punkt.</translation>
+    </message>
+    <message>
+        <source>Name: a body needs a name.</source>
+        <translation>Name: Ein Körper braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>Name: another body is already called “%1”; names must be unique.</source>
+        <translation>Name: Ein anderer Körper heißt schon „%1“; Namen müssen eindeutig sein.</translation>
+    </message>
+    <message>
+        <source>Rename body</source>
+        <translation>Körper umbenennen</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is neither a number nor “auto”.</source>
+        <translation>%1: „%2“ ist weder eine Zahl noch „auto“.</translation>
+    </message>
+    <message>
+        <source>%1 must be a number greater than 0, or “auto” (got %2).</source>
+        <translation>%1 muss eine Zahl größer als 0 oder „auto“ sein (eingegeben: %2).</translation>
+    </message>
+    <message>
+        <source>Change soft density</source>
+        <translation>Ellipsendichte ändern</translation>
+    </message>
+    <message>
+        <source>Vertex %1 %2</source>
+        <translation>Ecke %1 %2</translation>
+    </message>
+    <message>
+        <source>Move vertex</source>
+        <translation>Ecke verschieben</translation>
+    </message>
+    <message>
+        <source>Vertices: choose the vertex to remove in the table first.</source>
+        <translation>Ecken: zuerst die zu entfernende Ecke in der Tabelle wählen.</translation>
+    </message>
+    <message>
+        <source>Vertices: the shape is refused: %1.</source>
+        <translation>Ecken: Die Form wird abgelehnt: %1.</translation>
+    </message>
+    <message>
+        <source>Give mass instead of density</source>
+        <translation>Masse statt Dichte angeben</translation>
+    </message>
+    <message>
+        <source>Give density instead of mass</source>
+        <translation>Dichte statt Masse angeben</translation>
+    </message>
+    <message>
+        <source>Change integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <source>Fix body</source>
+        <translation>Körper festsetzen</translation>
+    </message>
+    <message>
+        <source>Free body</source>
+        <translation>Körper freigeben</translation>
+    </message>
+    <message>
+        <source>Turn on soft mode</source>
+        <translation>Weichen Modus einschalten</translation>
+    </message>
+    <message>
+        <source>Turn off soft mode</source>
+        <translation>Weichen Modus ausschalten</translation>
+    </message>
+    <message>
+        <source>Body Colour</source>
+        <translation>Farbe des Körpers</translation>
+    </message>
+    <message>
+        <source>Change colour</source>
+        <translation>Farbe ändern</translation>
+    </message>
+    <message>
+        <source>(world)</source>
+        <translation>(Welt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n items selected; the pane shows the first.</source>
+        <translation>
+            <numerusform>%n Objekt ausgewählt; die Leiste zeigt das erste.</numerusform>
+            <numerusform>%n Objekte ausgewählt; die Leiste zeigt das erste.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>World</source>
+        <translation>Welt</translation>
+    </message>
+    <message>
+        <source>Body “%1”</source>
+        <translation>Körper „%1“</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Kreis</translation>
+    </message>
+    <message>
+        <source>Ellipse</source>
+        <translation>Ellipse</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygon</translation>
+    </message>
+    <message>
+        <source>Current colour %1; press to choose another</source>
+        <translation>Aktuelle Farbe %1; klicken, um eine andere zu wählen</translation>
+    </message>
+    <message>
+        <source>Vertex %1 %2 = %3 m</source>
+        <translation>Ecke %1 %2 = %3 m</translation>
+    </message>
+    <message>
+        <source>Spring %1</source>
+        <translation>Feder %1</translation>
+    </message>
+    <message>
+        <source>Anchor B (body frame)</source>
+        <translation>Anker B (Körperkoordinaten)</translation>
+    </message>
+    <message>
+        <source>Anchor B (world point)</source>
+        <translation>Anker B (Weltpunkt)</translation>
+    </message>
+    <message>
+        <source>Pin joint %1</source>
+        <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <source>Rod joint %1</source>
+        <translation>Stange %1</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Rod</source>
+        <translation>Stange</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number.</source>
+        <translation>%1: „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number (got %2).</source>
+        <translation>%1 muss eine endliche Zahl sein (eingegeben: %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be greater than 0 (got %2).</source>
+        <translation>%1 muss größer als 0 sein (eingegeben: %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be 0 or greater (got %2).</source>
+        <translation>%1 muss 0 oder größer sein (eingegeben: %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be between 0 and 1 (got %2).</source>
+        <translation>%1 muss zwischen 0 und 1 liegen (eingegeben: %2).</translation>
+    </message>
+    <message>
+        <source>%L1 ellipses at %L2 per m², chosen by “auto” on this computer</source>
+        <translation>%L1 Ellipsen bei %L2 pro m², von „auto“ auf diesem Computer gewählt</translation>
+    </message>
+    <message>
+        <source>%L1 ellipses at %L2 per m²</source>
+        <translation>%L1 Ellipsen bei %L2 pro m²</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::SceneDocument</name>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Lauf</translation>
+    </message>
+</context>
+</TS>

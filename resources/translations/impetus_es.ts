@@ -1,0 +1,1390 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES">
+<context>
+    <name>RotationGesture</name>
+    <message>
+        <source>Rotate</source>
+        <translation>Girar</translation>
+    </message>
+</context>
+<context>
+    <name>Tool</name>
+    <message>
+        <source>box</source>
+        <translation>rectángulo</translation>
+    </message>
+    <message>
+        <source>Draw box</source>
+        <translation>Dibujar rectángulo</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>círculo</translation>
+    </message>
+    <message>
+        <source>Draw circle</source>
+        <translation>Dibujar círculo</translation>
+    </message>
+    <message>
+        <source>ellipse</source>
+        <translation>elipse</translation>
+    </message>
+    <message>
+        <source>Draw ellipse</source>
+        <translation>Dibujar elipse</translation>
+    </message>
+    <message>
+        <source>Add pin</source>
+        <translation>Añadir pasador</translation>
+    </message>
+    <message>
+        <source>Add rod</source>
+        <translation>Añadir varilla</translation>
+    </message>
+    <message>
+        <source>Click on a body to pin it there: to the body under it, or to the world.</source>
+        <translation>Haz clic en un cuerpo para sujetarlo ahí: al cuerpo de debajo o al mundo.</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body, or to a point in space, to add a rod.</source>
+        <translation>Arrastra desde un cuerpo hasta otro cuerpo, o hasta un punto del espacio, para añadir una varilla.</translation>
+    </message>
+    <message>
+        <source>a polygon needs at least 3 different corners</source>
+        <translation>un polígono necesita al menos 3 vértices distintos</translation>
+    </message>
+    <message>
+        <source>a corner is not a finite point</source>
+        <translation>un vértice no es un punto finito</translation>
+    </message>
+    <message>
+        <source>two corners are at the same point</source>
+        <translation>dos vértices están en el mismo punto</translation>
+    </message>
+    <message>
+        <source>it is too small or flat to have an area</source>
+        <translation>es demasiado pequeño o plano para tener área</translation>
+    </message>
+    <message>
+        <source>its edges cross each other</source>
+        <translation>sus lados se cruzan</translation>
+    </message>
+    <message>
+        <source>Cannot close the polygon: %1. Move or remove a corner (Backspace), or press Escape to give up.</source>
+        <translation>No se puede cerrar el polígono: %1. Mueve o quita un vértice (Retroceso), o pulsa Escape para desistir.</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>polígono</translation>
+    </message>
+    <message>
+        <source>Draw polygon</source>
+        <translation>Dibujar polígono</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Nudge</source>
+        <translation>Desplazar poco a poco</translation>
+    </message>
+    <message>
+        <source>Add spring</source>
+        <translation>Añadir muelle</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body, or to a point in space, to add a spring.</source>
+        <translation>Arrastra desde un cuerpo hasta otro cuerpo, o hasta un punto del espacio, para añadir un muelle.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::app::App</name>
+    <message>
+        <source>--size must be WxH with both sides from 1 to %1 pixels, not “%2”</source>
+        <translation>--size debe ser AnxAl con ambos lados de 1 a %1 píxeles, no «%2»</translation>
+    </message>
+    <message>
+        <source>--run-for must be a number of seconds ≥ 0, not “%1”</source>
+        <translation>--run-for debe ser un número de segundos ≥ 0, no «%1»</translation>
+    </message>
+    <message>
+        <source>--run-for %1 s is %2 steps, more than the %3 allowed</source>
+        <translation>--run-for %1 s son %2 pasos, más de los %3 permitidos</translation>
+    </message>
+    <message>
+        <source>the simulation produced a non-finite number: body “%1”, by t = %2 s</source>
+        <translation>la simulación produjo un número no finito: cuerpo «%1», hacia t = %2 s</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>no se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>Impetus, a 2D physics lab for the classroom.</source>
+        <translation>Impetus, un laboratorio de física 2D para el aula.</translation>
+    </message>
+    <message>
+        <source>Render the canvas to the PNG file FILE and exit.</source>
+        <translation>Dibujar el lienzo en el archivo PNG ARCHIVO y salir.</translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation>ARCHIVO</translation>
+    </message>
+    <message>
+        <source>With --screenshot: simulate SECONDS first (default 0).</source>
+        <translation>Con --screenshot: simular antes SEGUNDOS (por defecto 0).</translation>
+    </message>
+    <message>
+        <source>SECONDS</source>
+        <translation>SEGUNDOS</translation>
+    </message>
+    <message>
+        <source>With --screenshot: the image size in pixels (default 1280x720).</source>
+        <translation>Con --screenshot: el tamaño de la imagen en píxeles (por defecto 1280x720).</translation>
+    </message>
+    <message>
+        <source>WxH</source>
+        <translation>AnxAl</translation>
+    </message>
+    <message>
+        <source>The scene file to open (default: the example scene).</source>
+        <translation>El archivo de escena que abrir (por defecto, la escena de ejemplo).</translation>
+    </message>
+    <message>
+        <source>expected at most one scene file, got %1</source>
+        <translation>se esperaba como mucho un archivo de escena, se han dado %1</translation>
+    </message>
+    <message>
+        <source>--run-for and --size need --screenshot</source>
+        <translation>--run-for y --size necesitan --screenshot</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view</name>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>no se puede leer %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::CanvasView</name>
+    <message>
+        <source>Simulation canvas</source>
+        <translation>Lienzo de la simulación</translation>
+    </message>
+    <message>
+        <source>The bodies, springs and joints of the scene, in metres, y up</source>
+        <translation>Los cuerpos, muelles y uniones de la escena, en metros, con y hacia arriba</translation>
+    </message>
+    <message>
+        <source>%L1 m</source>
+        <translation>%L1 m</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::Examples</name>
+    <message>
+        <source>Billiards break</source>
+        <translation>Saque de billar</translation>
+    </message>
+    <message>
+        <source>Box stack and overhang</source>
+        <translation>Pila de cajas en voladizo</translation>
+    </message>
+    <message>
+        <source>Default scene</source>
+        <translation>Escena predeterminada</translation>
+    </message>
+    <message>
+        <source>Block on an incline</source>
+        <translation>Bloque en un plano inclinado</translation>
+    </message>
+    <message>
+        <source>Newton&apos;s cradle</source>
+        <translation>Péndulo de Newton</translation>
+    </message>
+    <message>
+        <source>Pendulum</source>
+        <translation>Péndulo</translation>
+    </message>
+    <message>
+        <source>Projectile over the ground</source>
+        <translation>Proyectil sobre el suelo</translation>
+    </message>
+    <message>
+        <source>Pyramid</source>
+        <translation>Pirámide</translation>
+    </message>
+    <message>
+        <source>Soft bodies: rigid and soft side by side</source>
+        <translation>Cuerpos blandos: rígido y blando lado a lado</translation>
+    </message>
+    <message>
+        <source>Spaceship and asteroids</source>
+        <translation>Nave espacial y asteroides</translation>
+    </message>
+    <message>
+        <source>Chain of springs</source>
+        <translation>Cadena de muelles</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>The language changes the next time Impetus starts.</source>
+        <translation>El idioma cambiará la próxima vez que se inicie Impetus.</translation>
+    </message>
+    <message>
+        <source>System Language</source>
+        <translation>Idioma del sistema</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::MainWindow</name>
+    <message>
+        <source>Impetus main window</source>
+        <translation>Ventana principal de Impetus</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuevo</translation>
+    </message>
+    <message>
+        <source>Start an empty scene</source>
+        <translation>Empezar una escena vacía</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Abrir…</translation>
+    </message>
+    <message>
+        <source>Open a scene file</source>
+        <translation>Abrir un archivo de escena</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>Save the scene to its file</source>
+        <translation>Guardar la escena en su archivo</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Guardar &amp;como…</translation>
+    </message>
+    <message>
+        <source>Save the scene to a new file</source>
+        <translation>Guardar la escena en un archivo nuevo</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Deshacer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rehacer</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Eliminar</translation>
+    </message>
+    <message>
+        <source>Delete the selection, and the springs and joints on deleted bodies</source>
+        <translation>Eliminar la selección y los muelles y uniones de los cuerpos eliminados</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>Seleccionar &amp;todo</translation>
+    </message>
+    <message>
+        <source>&amp;Snap to Grid</source>
+        <translation>&amp;Ajustar a la cuadrícula</translation>
+    </message>
+    <message>
+        <source>Place and move points on the grid lines&apos; crossings</source>
+        <translation>Colocar y mover puntos en los cruces de la cuadrícula</translation>
+    </message>
+    <message>
+        <source>Show Soft-Body &amp;Ellipses</source>
+        <translation>Mostrar e&amp;lipses de los cuerpos blandos</translation>
+    </message>
+    <message>
+        <source>Draw the small ellipses a soft body is made of</source>
+        <translation>Dibujar las pequeñas elipses de las que está hecho un cuerpo blando</translation>
+    </message>
+    <message>
+        <source>Show Soft-Body S&amp;train</source>
+        <translation>Mostrar &amp;deformación de los cuerpos blandos</translation>
+    </message>
+    <message>
+        <source>Draw a soft body&apos;s springs coloured by strain: blue compressed, grey at rest, red stretched</source>
+        <translation>Dibujar los muelles de un cuerpo blando coloreados según su deformación: azul comprimido, gris en reposo, rojo estirado</translation>
+    </message>
+    <message>
+        <source>&amp;Frame Scene</source>
+        <translation>&amp;Encuadrar la escena</translation>
+    </message>
+    <message>
+        <source>Zoom to show every body</source>
+        <translation>Ajustar el zoom para ver todos los cuerpos</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Run the simulation (Space)</source>
+        <translation>Ejecutar la simulación (Espacio)</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Advance one time step (→)</source>
+        <translation>Avanzar un paso de tiempo (→)</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Go back to the state at the last Play (R)</source>
+        <translation>Volver al estado del último inicio (R)</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Seleccionar</translation>
+    </message>
+    <message>
+        <source>Select, move (drag) and nudge (arrow keys); Ctrl+drag turns</source>
+        <translation>Seleccionar, mover (arrastrar) y desplazar poco a poco (flechas); Ctrl+arrastrar gira</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Girar</translation>
+    </message>
+    <message>
+        <source>Drag to turn a body or the selection about its centre</source>
+        <translation>Arrastra para girar un cuerpo o la selección alrededor de su centro</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polígono</translation>
+    </message>
+    <message>
+        <source>Click the corners; click the first one, press Enter or double-click to close</source>
+        <translation>Haz clic en los vértices; para cerrar, haz clic en el primero, pulsa Intro o haz doble clic</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Rectángulo</translation>
+    </message>
+    <message>
+        <source>Drag from corner to corner</source>
+        <translation>Arrastra de esquina a esquina</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Círculo</translation>
+    </message>
+    <message>
+        <source>Drag from the centre out</source>
+        <translation>Arrastra desde el centro hacia fuera</translation>
+    </message>
+    <message>
+        <source>Ellipse</source>
+        <translation>Elipse</translation>
+    </message>
+    <message>
+        <source>Drag out its bounding box</source>
+        <translation>Arrastra el rectángulo que la contiene</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Muelle</translation>
+    </message>
+    <message>
+        <source>Drag from a body to another body or to a point</source>
+        <translation>Arrastra desde un cuerpo hasta otro cuerpo o hasta un punto</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Pasador</translation>
+    </message>
+    <message>
+        <source>Click on a body to hinge it to the body below or the world</source>
+        <translation>Haz clic en un cuerpo para articularlo al cuerpo de debajo o al mundo</translation>
+    </message>
+    <message>
+        <source>Rod</source>
+        <translation>Varilla</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3</source>
+        <translation>%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;reciente</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Herramientas</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulación</translation>
+    </message>
+    <message>
+        <source>&amp;Compare Soft with Rigid…</source>
+        <translation>&amp;Comparar blando con rígido…</translation>
+    </message>
+    <message>
+        <source>Run the selected soft body rigid and soft for a few seconds and show how far apart they drift</source>
+        <translation>Simular el cuerpo blando seleccionado como rígido y como blando durante unos segundos y mostrar cuánto se separan</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>E&amp;jemplos</translation>
+    </message>
+    <message>
+        <source>Run controls</source>
+        <translation>Controles de ejecución</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>Iniciar o pausar</translation>
+    </message>
+    <message>
+        <source>Step once</source>
+        <translation>Avanzar un paso</translation>
+    </message>
+    <message>
+        <source>Reset to the last Play</source>
+        <translation>Reiniciar al último inicio</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <source>Simulation speed</source>
+        <translation>Velocidad de la simulación</translation>
+    </message>
+    <message>
+        <source>Simulated seconds per real second</source>
+        <translation>Segundos simulados por segundo real</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Herramientas</translation>
+    </message>
+    <message>
+        <source>Drawing tools</source>
+        <translation>Herramientas de dibujo</translation>
+    </message>
+    <message>
+        <source>%1 tool</source>
+        <translation>Herramienta %1</translation>
+    </message>
+    <message>
+        <source>Attributes</source>
+        <translation>Atributos</translation>
+    </message>
+    <message>
+        <source>Simulated time</source>
+        <translation>Tiempo simulado</translation>
+    </message>
+    <message>
+        <source>Kinetic, potential and elastic energy</source>
+        <translation>Energía cinética, potencial y elástica</translation>
+    </message>
+    <message>
+        <source>Kinetic energy K, gravitational potential energy U (from y = 0) and elastic energy of the springs</source>
+        <translation>Energía cinética K, energía potencial gravitatoria U (desde y = 0) y energía elástica de los muelles</translation>
+    </message>
+    <message>
+        <source>Total energy</source>
+        <translation>Energía total</translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation>Cantidad de movimiento total</translation>
+    </message>
+    <message>
+        <source>Collision count</source>
+        <translation>Número de colisiones</translation>
+    </message>
+    <message>
+        <source>Soft bodies</source>
+        <translation>Cuerpos blandos</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sin título</translation>
+    </message>
+    <message>
+        <source>Open Scene</source>
+        <translation>Abrir escena</translation>
+    </message>
+    <message>
+        <source>Impetus scenes (*.json);;All files (*)</source>
+        <translation>Escenas de Impetus (*.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>The default scene is shown instead.</source>
+        <translation>En su lugar se muestra la escena predeterminada.</translation>
+    </message>
+    <message>
+        <source>An empty scene is shown instead.</source>
+        <translation>En su lugar se muestra una escena vacía.</translation>
+    </message>
+    <message>
+        <source>The current scene is unchanged.</source>
+        <translation>La escena actual no cambia.</translation>
+    </message>
+    <message>
+        <source>Cannot open scene</source>
+        <translation>No se puede abrir la escena</translation>
+    </message>
+    <message>
+        <source>“%1” could not be opened. %2</source>
+        <translation>No se pudo abrir «%1». %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>…and %n more.</source>
+        <translation>
+            <numerusform>…y %n más.</numerusform>
+            <numerusform>…y %n más.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The simulation blew up</source>
+        <translation>La simulación ha explotado</translation>
+    </message>
+    <message>
+        <source>Body “%1” got a position or velocity that is not a finite number by t = %2 s.</source>
+        <translation>El cuerpo «%1» tiene, hacia t = %2 s, una posición o velocidad que no es un número finito.</translation>
+    </message>
+    <message>
+        <source>The run stopped at the last finite state. The time step is too large for the stiffest spring or the fastest motion in the scene. Press Reset (R) to go back to where you pressed Play, or Undo (Ctrl+Z); then try a smaller time step or a softer spring.</source>
+        <translation>La ejecución se detuvo en el último estado finito. El paso de tiempo es demasiado grande para el muelle más rígido o el movimiento más rápido de la escena. Pulsa Reiniciar (R) para volver al punto en que pulsaste Iniciar, o Deshacer (Ctrl+Z); después prueba un paso de tiempo menor o un muelle más blando.</translation>
+    </message>
+    <message>
+        <source>Cannot save scene</source>
+        <translation>No se puede guardar la escena</translation>
+    </message>
+    <message>
+        <source>The scene could not be saved to “%1”. Nothing was overwritten.</source>
+        <translation>No se pudo guardar la escena en «%1». No se ha sobrescrito nada.</translation>
+    </message>
+    <message>
+        <source>Save Scene</source>
+        <translation>Guardar escena</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>“%1” has changes that are not saved.</source>
+        <translation>«%1» tiene cambios sin guardar.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>¿Guardarlos antes de continuar?</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausar</translation>
+    </message>
+    <message>
+        <source>Pause the simulation (Space)</source>
+        <translation>Pausar la simulación (Espacio)</translation>
+    </message>
+    <message>
+        <source>Running %1 rigid and soft…</source>
+        <translation>Simulando %1 rígido y blando…</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;th align=right&gt;t (s)&lt;/th&gt;&lt;th align=right&gt;distance (m)&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;th align=right&gt;t (s)&lt;/th&gt;&lt;th align=right&gt;distancia (m)&lt;/th&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <source>Soft against rigid</source>
+        <translation>Blando frente a rígido</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;How far the centre of mass of &lt;b&gt;%1&lt;/b&gt; run soft (%2 ellipses, %3 per m²) drifts from the same body run rigid, over the next %4 s:&lt;/p&gt;&lt;p&gt;RMS %5 m, largest %6 m at t = %7 s.&lt;/p&gt;%8</source>
+        <translation>&lt;p&gt;Cuánto se aleja el centro de masas de &lt;b&gt;%1&lt;/b&gt; simulado como blando (%2 elipses, %3 por m²) del mismo cuerpo simulado como rígido, durante los próximos %4 s:&lt;/p&gt;&lt;p&gt;Valor eficaz %5 m, máximo %6 m en t = %7 s.&lt;/p&gt;%8</translation>
+    </message>
+    <message>
+        <source>%1 — %2 substeps per step</source>
+        <translation>%1 — %2 subpasos por paso</translation>
+    </message>
+    <message>
+        <source>One step per step: the grids are stable at this time step.</source>
+        <translation>Un subpaso por paso: las cuadrículas son estables con este paso de tiempo.</translation>
+    </message>
+    <message>
+        <source>%1[*] — Impetus</source>
+        <translation>%1[*] — Impetus</translation>
+    </message>
+    <message>
+        <source>t = %L1 s</source>
+        <translation>t = %L1 s</translation>
+    </message>
+    <message>
+        <source>K = %L1 J  U = %L2 J  elastic = %L3 J</source>
+        <translation>K = %L1 J  U = %L2 J  elástica = %L3 J</translation>
+    </message>
+    <message>
+        <source>E = %L1 J</source>
+        <translation>E = %L1 J</translation>
+    </message>
+    <message>
+        <source>p = (%L1, %L2) kg·m/s</source>
+        <translation>p = (%L1; %L2) kg·m/s</translation>
+    </message>
+    <message>
+        <source>Collisions: %L1</source>
+        <translation>Colisiones: %L1</translation>
+    </message>
+    <message>
+        <source>%1: %L2/m² (auto)</source>
+        <translation>%1: %L2/m² (automático)</translation>
+    </message>
+    <message>
+        <source>%1: %L2/m²</source>
+        <translation>%1: %L2/m²</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::PaceIndicator</name>
+    <message>
+        <source>Speed against real time</source>
+        <translation>Velocidad respecto al tiempo real</translation>
+    </message>
+    <message>
+        <source>Computing a step…</source>
+        <translation>Calculando un paso…</translation>
+    </message>
+    <message>
+        <source>Running at %1× real time</source>
+        <translation>A %1× el tiempo real</translation>
+    </message>
+    <message>
+        <source>Running at %1× real time (speed set to %2×)</source>
+        <translation>A %1× el tiempo real (velocidad elegida: %2×)</translation>
+    </message>
+    <message>
+        <source>Simulated time runs at %1× real time, slower than the %2× asked for.</source>
+        <translation>El tiempo simulado avanza a %1× el tiempo real, más despacio que los %2× pedidos.</translation>
+    </message>
+    <message>
+        <source>Step (→) is computing one time step in the background. The canvas shows it when it is done; the window keeps working meanwhile.</source>
+        <translation>Paso (→) está calculando un paso de tiempo en segundo plano. El lienzo lo mostrará al terminar; mientras tanto la ventana sigue funcionando.</translation>
+    </message>
+    <message>
+        <source>No step has been computed yet; the first one has taken %1 s so far.</source>
+        <translation>Aún no se ha calculado ningún paso; el primero lleva %1 s.</translation>
+    </message>
+    <message>
+        <source>One step (%1 ms of simulated time) takes %2 ms to compute; at %3× it may take at most %4 ms.</source>
+        <translation>Un paso (%1 ms de tiempo simulado) tarda %2 ms en calcularse; a %3× puede tardar como mucho %4 ms.</translation>
+    </message>
+    <message>
+        <source>The last step took %1 ms to compute.</source>
+        <translation>El último paso tardó %1 ms en calcularse.</translation>
+    </message>
+    <message>
+        <source>The steps being computed now have taken %1 s so far.</source>
+        <translation>Los pasos que se están calculando llevan %1 s.</translation>
+    </message>
+    <message>
+        <source>The last step — bodies: %1, contacts: %2, impacts: %3. Solving the contacts and joints took %4 ms of its %5 ms.</source>
+        <translation>El último paso — cuerpos: %1, contactos: %2, choques: %3. Resolver los contactos y las uniones llevó %4 ms de sus %5 ms.</translation>
+    </message>
+    <message>
+        <source>Soft bodies split each step into %1 substeps. %2</source>
+        <translation>Los cuerpos blandos dividen cada paso en %1 subpasos. %2</translation>
+    </message>
+    <message>
+        <source>To make steps faster: use fewer bodies, or give soft bodies fewer ellipses per m².</source>
+        <translation>Para que los pasos sean más rápidos: usa menos cuerpos o da a los cuerpos blandos menos elipses por m².</translation>
+    </message>
+    <message>
+        <source>The steps themselves are fast enough: the computer was busy with something else for a moment.</source>
+        <translation>Los pasos en sí son bastante rápidos: el ordenador estuvo ocupado con otra cosa un momento.</translation>
+    </message>
+    <message>
+        <source>To keep up: use fewer bodies, give soft bodies fewer ellipses per m², make the time step larger, or choose a lower speed.</source>
+        <translation>Para no quedarse atrás: usa menos cuerpos, da a los cuerpos blandos menos elipses por m², aumenta el paso de tiempo o elige una velocidad menor.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::ProjectorMode</name>
+    <message>
+        <source>&amp;Projector Mode</source>
+        <translation>Modo &amp;proyector</translation>
+    </message>
+    <message>
+        <source>Full screen, large text and readouts, thick lines and strong contrast for a projector (F11)</source>
+        <translation>Pantalla completa, texto y lecturas grandes, líneas gruesas y mucho contraste para el proyector (F11)</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::PropertyPane</name>
+    <message>
+        <source>Attributes</source>
+        <translation>Atributos</translation>
+    </message>
+    <message>
+        <source>Shown item</source>
+        <translation>Elemento mostrado</translation>
+    </message>
+    <message>
+        <source>Selection note</source>
+        <translation>Nota sobre la selección</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>Unit: %1</source>
+        <translation>Unidad: %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>World settings</source>
+        <translation>Ajustes del mundo</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Gravedad</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>Change gravity</source>
+        <translation>Cambiar la gravedad</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrador</translation>
+    </message>
+    <message>
+        <source>Explicit Euler (euler)</source>
+        <translation>Euler explícito (euler)</translation>
+    </message>
+    <message>
+        <source>Semi-implicit Euler (semi-implicit-euler)</source>
+        <translation>Euler semiimplícito (semi-implicit-euler)</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta 4 (rk4)</source>
+        <translation>Runge-Kutta 4 (rk4)</translation>
+    </message>
+    <message>
+        <source>Time step</source>
+        <translation>Paso de tiempo</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>Change time step</source>
+        <translation>Cambiar el paso de tiempo</translation>
+    </message>
+    <message>
+        <source>Time step must be from %1 s to %2 s (got %3 s).</source>
+        <translation>El paso de tiempo debe estar entre %1 s y %2 s (se ha dado %3 s).</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Rozamiento del aire</translation>
+    </message>
+    <message>
+        <source>N·s/m</source>
+        <translation>N·s/m</translation>
+    </message>
+    <message>
+        <source>Change drag</source>
+        <translation>Cambiar el rozamiento del aire</translation>
+    </message>
+    <message>
+        <source>Body attributes</source>
+        <translation>Atributos del cuerpo</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>Resize body</source>
+        <translation>Cambiar el tamaño del cuerpo</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radio</translation>
+    </message>
+    <message>
+        <source>Semi-axis x</source>
+        <translation>Semieje x</translation>
+    </message>
+    <message>
+        <source>Semi-axis y</source>
+        <translation>Semieje y</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Anchura</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Altura</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vértices</translation>
+    </message>
+    <message>
+        <source>Polygon vertices in the body&apos;s own frame, in metres</source>
+        <translation>Vértices del polígono en el sistema de referencia del cuerpo, en metros</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>Add vertex</source>
+        <translation>Añadir vértice</translation>
+    </message>
+    <message>
+        <source>Insert a vertex halfway along the edge after the current vertex</source>
+        <translation>Insertar un vértice en la mitad del lado que sigue al vértice actual</translation>
+    </message>
+    <message>
+        <source>Remove vertex</source>
+        <translation>Quitar vértice</translation>
+    </message>
+    <message>
+        <source>Remove the current vertex</source>
+        <translation>Quitar el vértice actual</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Posición</translation>
+    </message>
+    <message>
+        <source>Move body</source>
+        <translation>Mover el cuerpo</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Rotate body</source>
+        <translation>Girar el cuerpo</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Change velocity</source>
+        <translation>Cambiar la velocidad</translation>
+    </message>
+    <message>
+        <source>Angular velocity</source>
+        <translation>Velocidad angular</translation>
+    </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>Change angular velocity</source>
+        <translation>Cambiar la velocidad angular</translation>
+    </message>
+    <message>
+        <source>Mass given as</source>
+        <translation>Masa dada como</translation>
+    </message>
+    <message>
+        <source>Choose whether you give the density or the mass; the other follows from the area</source>
+        <translation>Elige si das la densidad o la masa; la otra se deduce del área</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Densidad</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Masa</translation>
+    </message>
+    <message>
+        <source>kg/m²</source>
+        <translation>kg/m²</translation>
+    </message>
+    <message>
+        <source>Change density</source>
+        <translation>Cambiar la densidad</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Change mass</source>
+        <translation>Cambiar la masa</translation>
+    </message>
+    <message>
+        <source>Moment of inertia</source>
+        <translation>Momento de inercia</translation>
+    </message>
+    <message>
+        <source>kg·m²</source>
+        <translation>kg·m²</translation>
+    </message>
+    <message>
+        <source>Restitution</source>
+        <translation>Restitución</translation>
+    </message>
+    <message>
+        <source>(0–1)</source>
+        <translation>(0–1)</translation>
+    </message>
+    <message>
+        <source>Change restitution</source>
+        <translation>Cambiar la restitución</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Rozamiento</translation>
+    </message>
+    <message>
+        <source>(≥ 0)</source>
+        <translation>(≥ 0)</translation>
+    </message>
+    <message>
+        <source>Change friction</source>
+        <translation>Cambiar el rozamiento</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Fijo</translation>
+    </message>
+    <message>
+        <source>A fixed body has infinite mass: it moves only with the velocity it is given</source>
+        <translation>Un cuerpo fijo tiene masa infinita: solo se mueve con la velocidad que se le da</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Color</translation>
+    </message>
+    <message>
+        <source>Soft body</source>
+        <translation>Cuerpo blando</translation>
+    </message>
+    <message>
+        <source>Simulate the body as a grid of small ellipses joined by springs</source>
+        <translation>Simular el cuerpo como una cuadrícula de pequeñas elipses unidas por muelles</translation>
+    </message>
+    <message>
+        <source>Ellipses per square metre</source>
+        <translation>Elipses por metro cuadrado</translation>
+    </message>
+    <message>
+        <source>A number greater than 0, or “auto”</source>
+        <translation>Un número mayor que 0, o «auto»</translation>
+    </message>
+    <message>
+        <source>a number or “auto”</source>
+        <translation>un número o «auto»</translation>
+    </message>
+    <message>
+        <source>Ellipses per m²</source>
+        <translation>Elipses por m²</translation>
+    </message>
+    <message>
+        <source>1/m²</source>
+        <translation>1/m²</translation>
+    </message>
+    <message>
+        <source>Soft grid</source>
+        <translation>Cuadrícula blanda</translation>
+    </message>
+    <message>
+        <source>Soft stiffness</source>
+        <translation>Rigidez (blando)</translation>
+    </message>
+    <message>
+        <source>N/m</source>
+        <translation>N/m</translation>
+    </message>
+    <message>
+        <source>Change soft stiffness</source>
+        <translation>Cambiar la rigidez del cuerpo blando</translation>
+    </message>
+    <message>
+        <source>Soft damping</source>
+        <translation>Amortiguación (blando)</translation>
+    </message>
+    <message>
+        <source>Change soft damping</source>
+        <translation>Cambiar la amortiguación del cuerpo blando</translation>
+    </message>
+    <message>
+        <source>Spring attributes</source>
+        <translation>Atributos del muelle</translation>
+    </message>
+    <message>
+        <source>Body A</source>
+        <translation>Cuerpo A</translation>
+    </message>
+    <message>
+        <source>Anchor A</source>
+        <translation>Anclaje A</translation>
+    </message>
+    <message>
+        <source>Move spring end</source>
+        <translation>Mover el extremo del muelle</translation>
+    </message>
+    <message>
+        <source>Anchor A (body frame)</source>
+        <translation>Anclaje A (sistema del cuerpo)</translation>
+    </message>
+    <message>
+        <source>Body B</source>
+        <translation>Cuerpo B</translation>
+    </message>
+    <message>
+        <source>Anchor B</source>
+        <translation>Anclaje B</translation>
+    </message>
+    <message>
+        <source>Stiffness</source>
+        <translation>Constante elástica</translation>
+    </message>
+    <message>
+        <source>Change spring stiffness</source>
+        <translation>Cambiar la constante elástica</translation>
+    </message>
+    <message>
+        <source>Damping</source>
+        <translation>Amortiguación</translation>
+    </message>
+    <message>
+        <source>Change spring damping</source>
+        <translation>Cambiar la amortiguación del muelle</translation>
+    </message>
+    <message>
+        <source>Rest length</source>
+        <translation>Longitud en reposo</translation>
+    </message>
+    <message>
+        <source>Change rest length</source>
+        <translation>Cambiar la longitud en reposo</translation>
+    </message>
+    <message>
+        <source>Joint attributes</source>
+        <translation>Atributos de la unión</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Hinge</source>
+        <translation>Bisagra</translation>
+    </message>
+    <message>
+        <source>Move hinge</source>
+        <translation>Mover la bisagra</translation>
+    </message>
+    <message>
+        <source>Move rod end</source>
+        <translation>Mover el extremo de la varilla</translation>
+    </message>
+    <message>
+        <source>Hinge (world point)</source>
+        <translation>Bisagra (punto del mundo)</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Longitud</translation>
+    </message>
+    <message>
+        <source>The size or density is too extreme to simulate (mass %1 kg, moment of inertia %2 kg·m²).</source>
+        <translation>El tamaño o la densidad son demasiado extremos para simularlos (masa %1 kg, momento de inercia %2 kg·m²).</translation>
+    </message>
+    <message>
+        <source>A rod needs two different ends: both anchors are at the same point.</source>
+        <translation>Una varilla necesita dos extremos distintos: los dos anclajes están en el mismo punto.</translation>
+    </message>
+    <message>
+        <source>Name: a body needs a name.</source>
+        <translation>Nombre: un cuerpo necesita un nombre.</translation>
+    </message>
+    <message>
+        <source>Name: another body is already called “%1”; names must be unique.</source>
+        <translation>Nombre: otro cuerpo ya se llama «%1»; los nombres deben ser únicos.</translation>
+    </message>
+    <message>
+        <source>Rename body</source>
+        <translation>Renombrar el cuerpo</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is neither a number nor “auto”.</source>
+        <translation>%1: «%2» no es un número ni «auto».</translation>
+    </message>
+    <message>
+        <source>%1 must be a number greater than 0, or “auto” (got %2).</source>
+        <translation>%1 debe ser un número mayor que 0, o «auto» (se ha dado %2).</translation>
+    </message>
+    <message>
+        <source>Change soft density</source>
+        <translation>Cambiar la densidad de elipses</translation>
+    </message>
+    <message>
+        <source>Vertex %1 %2</source>
+        <translation>Vértice %1 %2</translation>
+    </message>
+    <message>
+        <source>Move vertex</source>
+        <translation>Mover el vértice</translation>
+    </message>
+    <message>
+        <source>Vertices: choose the vertex to remove in the table first.</source>
+        <translation>Vértices: elige primero en la tabla el vértice que quieres quitar.</translation>
+    </message>
+    <message>
+        <source>Vertices: the shape is refused: %1.</source>
+        <translation>Vértices: la forma no es válida: %1.</translation>
+    </message>
+    <message>
+        <source>Give mass instead of density</source>
+        <translation>Dar la masa en lugar de la densidad</translation>
+    </message>
+    <message>
+        <source>Give density instead of mass</source>
+        <translation>Dar la densidad en lugar de la masa</translation>
+    </message>
+    <message>
+        <source>Change integrator</source>
+        <translation>Cambiar el integrador</translation>
+    </message>
+    <message>
+        <source>Fix body</source>
+        <translation>Fijar el cuerpo</translation>
+    </message>
+    <message>
+        <source>Free body</source>
+        <translation>Soltar el cuerpo</translation>
+    </message>
+    <message>
+        <source>Turn on soft mode</source>
+        <translation>Activar el modo blando</translation>
+    </message>
+    <message>
+        <source>Turn off soft mode</source>
+        <translation>Desactivar el modo blando</translation>
+    </message>
+    <message>
+        <source>Body Colour</source>
+        <translation>Color del cuerpo</translation>
+    </message>
+    <message>
+        <source>Change colour</source>
+        <translation>Cambiar el color</translation>
+    </message>
+    <message>
+        <source>(world)</source>
+        <translation>(mundo)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n items selected; the pane shows the first.</source>
+        <translation>
+            <numerusform>%n elemento seleccionado; el panel muestra el primero.</numerusform>
+            <numerusform>%n elementos seleccionados; el panel muestra el primero.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>World</source>
+        <translation>Mundo</translation>
+    </message>
+    <message>
+        <source>Body “%1”</source>
+        <translation>Cuerpo «%1»</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Círculo</translation>
+    </message>
+    <message>
+        <source>Ellipse</source>
+        <translation>Elipse</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Rectángulo</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polígono</translation>
+    </message>
+    <message>
+        <source>Current colour %1; press to choose another</source>
+        <translation>Color actual %1; pulsa para elegir otro</translation>
+    </message>
+    <message>
+        <source>Vertex %1 %2 = %3 m</source>
+        <translation>Vértice %1 %2 = %3 m</translation>
+    </message>
+    <message>
+        <source>Spring %1</source>
+        <translation>Muelle %1</translation>
+    </message>
+    <message>
+        <source>Anchor B (body frame)</source>
+        <translation>Anclaje B (sistema del cuerpo)</translation>
+    </message>
+    <message>
+        <source>Anchor B (world point)</source>
+        <translation>Anclaje B (punto del mundo)</translation>
+    </message>
+    <message>
+        <source>Pin joint %1</source>
+        <translation>Pasador %1</translation>
+    </message>
+    <message>
+        <source>Rod joint %1</source>
+        <translation>Varilla %1</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Pasador</translation>
+    </message>
+    <message>
+        <source>Rod</source>
+        <translation>Varilla</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number.</source>
+        <translation>%1: «%2» no es un número.</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number (got %2).</source>
+        <translation>%1 debe ser un número finito (se ha dado %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be greater than 0 (got %2).</source>
+        <translation>%1 debe ser mayor que 0 (se ha dado %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be 0 or greater (got %2).</source>
+        <translation>%1 debe ser 0 o mayor (se ha dado %2).</translation>
+    </message>
+    <message>
+        <source>%1 must be between 0 and 1 (got %2).</source>
+        <translation>%1 debe estar entre 0 y 1 (se ha dado %2).</translation>
+    </message>
+    <message>
+        <source>%L1 ellipses at %L2 per m², chosen by “auto” on this computer</source>
+        <translation>%L1 elipses a %L2 por m², elegidas por «auto» en este ordenador</translation>
+    </message>
+    <message>
+        <source>%L1 ellipses at %L2 per m²</source>
+        <translation>%L1 elipses a %L2 por m²</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::SceneDocument</name>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ejecución</translation>
+    </message>
+</context>
+</TS>

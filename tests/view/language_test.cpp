@@ -1,0 +1,234 @@
+// The language of the window: German and Spanish translations built into the program, chosen from
+// the system or from View › Language, numbers in the locale's format, scene files always with a
+// decimal point. Driven as a user would: the menus are read, a value is typed into the pane.
+
+#include "model/scene_io.h"
+#include "test_settings.h"
+#include "test_worlds.h"
+#include "view/language.h"
+#include "view/main_window.h"
+#include "view/property_pane.h"
+#include "view/scene_document.h"
+#include "view/simulation_runner.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <variant>
+
+using impetus::view::MainWindow;
+namespace model = impetus::model;
+namespace test = impetus::view::test;
+namespace view = impetus::view;
+
+namespace {
+
+/// The titles of the menu bar's menus, in order.
+QStringList menuTitles(MainWindow& window)
+{
+    QStringList titles;
+    for (const QAction* action : window.menuBar()->actions())
+        titles << action->text();
+    return titles;
+}
+
+/// The texts of the entries of the menu whose title is `title`, sub-menus included.
+QStringList menuEntries(MainWindow& window, const QString& title)
+{
+    QStringList entries;
+    for (const QAction* action : window.menuBar()->actions())
+        if (action->text() == title && action->menu())
+            for (const QAction* entry : action->menu()->actions())
+                if (!entry->isSeparator())
+                    entries << entry->text();
+    return entries;
+}
+
+/// The status bar label whose accessible name is `name`, or nullptr.
+QLabel* statusLabel(MainWindow& window, const QString& name)
+{
+    for (QLabel* label : window.statusBar()->findChildren<QLabel*>())
+        if (label->accessibleName() == name)
+            return label;
+    return nullptr;
+}
+
+/// Chooses `code` as a user would have in View › Language before this start, then starts the app's
+/// language as impetus_main does. True when a translation was installed.
+bool startIn(const QString& code)
+{
+    view::setLanguageSetting(code);
+    return view::applyLanguage(*QCoreApplication::instance(), view::chosenLocale());
+}
+
+/// A world with one ball of radius 0.5 m at (1.5, 2).
+model::World ballWorld()
+{
+    model::World world;
+    world.bodies.push_back(test::makeBody("ball", model::Circle{0.5}, impetus::Vec2(1.5, 2)));
+    return world;
+}
+
+/// Selects everything in `edit`, types `text` and presses Enter, as a user would.
+void typeAndEnter(QLineEdit* edit, const QString& text)
+{
+    edit->setFocus();
+    edit->selectAll();
+    QTest::keyClick(edit, Qt::Key_Delete);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+}
+
+} // namespace
+
+class LanguageTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void cleanup();
+    void germanWindowHasGermanMenus();
+    void spanishWindowHasSpanishMenus();
+    void englishNeedsNoTranslation();
+    void numbersFollowTheLocaleButSceneFilesDoNot();
+    void languageMenuKeepsTheChoiceForTheNextStart();
+    void unknownLanguageSettingMeansTheSystemLanguage();
+
+private:
+    test::TemporarySettings m_settings;
+};
+
+void LanguageTest::cleanup()
+{
+    // Back to the untranslated C locale, so that each test starts from the same place.
+    view::setLanguageSetting(QString());
+    view::applyLanguage(*QCoreApplication::instance(), QLocale::c());
+}
+
+void LanguageTest::germanWindowHasGermanMenus()
+{
+    QVERIFY(startIn(QStringLiteral("de")));
+    MainWindow window;
+
+    const QStringList titles = menuTitles(window);
+    for (const char* title : {"&Datei", "&Bearbeiten", "&Ansicht", "&Werkzeuge", "&Simulation", "Beisp&iele"})
+        QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char('|'))));
+    QVERIFY(!titles.contains(QStringLiteral("&File")));
+
+    const QStringList file = menuEntries(window, QStringLiteral("&Datei"));
+    QVERIFY2(file.contains(QStringLiteral("Ö&ffnen…")) && file.contains(QStringLiteral("&Speichern")),
+             qPrintable(file.join(QLatin1Char('|'))));
+    const QStringList viewEntries = menuEntries(window, QStringLiteral("&Ansicht"));
+    QVERIFY2(viewEntries.contains(QStringLiteral("&Projektormodus")) && viewEntries.contains(QStringLiteral("&Sprache")),
+             qPrintable(viewEntries.join(QLatin1Char('|'))));
+    QVERIFY(menuEntries(window, QStringLiteral("Beisp&iele")).contains(QStringLiteral("Pendel")));
+    QCOMPARE(window.playAction()->text(), QStringLiteral("Start"));
+    QCOMPARE(window.resetAction()->text(), QStringLiteral("Zurücksetzen"));
+}
+
+void LanguageTest::spanishWindowHasSpanishMenus()
+{
+    QVERIFY(startIn(QStringLiteral("es")));
+    MainWindow window;
+
+    const QStringList titles = menuTitles(window);
+    for (const char* title : {"&Archivo", "&Editar", "&Ver", "&Herramientas", "&Simulación", "E&jemplos"})
+        QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char('|'))));
+    QCOMPARE(window.stepAction()->text(), QStringLiteral("Paso"));
+    QVERIFY(menuEntries(window, QStringLiteral("E&jemplos")).contains(QStringLiteral("Péndulo")));
+}
+
+void LanguageTest::englishNeedsNoTranslation()
+{
+    QVERIFY(!startIn(QStringLiteral("en")));
+    MainWindow window;
+    QVERIFY(menuTitles(window).contains(QStringLiteral("&File")));
+    QCOMPARE(QLocale().language(), QLocale::English);
+}
+
+void LanguageTest::numbersFollowTheLocaleButSceneFilesDoNot()
+{
+    QVERIFY(startIn(QStringLiteral("de")));
+    MainWindow window;
+    window.setScene(ballWorld(), QStringLiteral("ball"));
+    window.document().setSelection(view::Selection{{0}, {}, {}});
+
+    // The readouts and the pane write a decimal comma …
+    QLabel* time = statusLabel(window, QStringLiteral("Simulierte Zeit"));
+    QVERIFY(time);
+    QCOMPARE(time->text(), QStringLiteral("t = 0,000 s"));
+    auto* radius = window.propertyPane()->findChild<QLineEdit*>(QStringLiteral("radius"));
+    QVERIFY(radius);
+    QCOMPARE(radius->text(), QStringLiteral("0,5"));
+    auto* positionX = window.propertyPane()->findChild<QLineEdit*>(QStringLiteral("positionX"));
+    QCOMPARE(positionX->text(), QStringLiteral("1,5"));
+
+    // … and read one: "0,25" is a quarter of a metre, not 25.
+    typeAndEnter(radius, QStringLiteral("0,25"));
+    const auto* circle = std::get_if<model::Circle>(&window.runner().world().bodies[0].shape);
+    QVERIFY(circle);
+    QCOMPARE(circle->radius, 0.25);
+
+    // The scene file has a decimal point whatever the window's language.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("ball.json"));
+    QVERIFY(window.saveTo(path));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY2(text.contains(QStringLiteral("0.25")) && text.contains(QStringLiteral("1.5")), qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("0,25")) && !text.contains(QStringLiteral("1,5")), qPrintable(text));
+    const model::SceneLoadResult loaded = model::loadSceneFile(path.toStdString());
+    QVERIFY(loaded.ok());
+    QCOMPARE(std::get<model::Circle>(loaded.world->bodies[0].shape).radius, 0.25);
+}
+
+void LanguageTest::languageMenuKeepsTheChoiceForTheNextStart()
+{
+    MainWindow window;
+    auto* menu = window.findChild<QMenu*>(QStringLiteral("languageMenu"));
+    QVERIFY(menu);
+    QStringList names;
+    QAction* spanish = nullptr;
+    QAction* system = nullptr;
+    for (QAction* action : menu->actions()) {
+        names << action->text();
+        if (action->data().toString() == QStringLiteral("es"))
+            spanish = action;
+        if (!action->isSeparator() && action->data().toString().isEmpty())
+            system = action;
+    }
+    // Each language is named in itself, so a user finds theirs whatever the window speaks.
+    QVERIFY2(names.contains(QStringLiteral("Deutsch")) && names.contains(QStringLiteral("Español")),
+             qPrintable(names.join(QLatin1Char('|'))));
+    QVERIFY(spanish && system);
+    QVERIFY(system->isChecked());
+
+    spanish->trigger();
+    QVERIFY(spanish->isChecked());
+    QCOMPARE(QSettings().value(QLatin1String(view::kLanguageSettingKey)).toString(), QStringLiteral("es"));
+    QCOMPARE(view::chosenLocale().language(), QLocale::Spanish);
+    QCOMPARE(window.statusBar()->currentMessage(), QStringLiteral("The language changes the next time Impetus starts."));
+
+    system->trigger();
+    QVERIFY(!QSettings().contains(QLatin1String(view::kLanguageSettingKey)));
+    QCOMPARE(view::chosenLocale().language(), QLocale::system().language());
+}
+
+void LanguageTest::unknownLanguageSettingMeansTheSystemLanguage()
+{
+    QSettings().setValue(QLatin1String(view::kLanguageSettingKey), QStringLiteral("tlh"));
+    QVERIFY(view::languageSetting().isEmpty());
+    QCOMPARE(view::chosenLocale().language(), QLocale::system().language());
+}
+
+QTEST_MAIN(LanguageTest)
+#include "language_test.moc"

@@ -1,0 +1,194 @@
+// View › Projector Mode, driven as a user would: F11 on the window, then what the class sees —
+// larger readouts, full screen, thick lines, and colliding bodies marked by more than colour.
+
+#include "test_settings.h"
+#include "test_worlds.h"
+#include "view/body_item.h"
+#include "view/canvas_look.h"
+#include "view/canvas_view.h"
+#include "view/main_window.h"
+#include "view/projector_constants.h"
+#include "view/projector_mode.h"
+#include "view/simulation_runner.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTest>
+
+using impetus::view::MainWindow;
+namespace model = impetus::model;
+namespace test = impetus::view::test;
+namespace view = impetus::view;
+namespace constants = impetus::view::constants;
+
+namespace {
+
+/// The status bar label whose accessible name is `name`, or nullptr.
+QLabel* statusLabel(MainWindow& window, const QString& name)
+{
+    for (QLabel* label : window.statusBar()->findChildren<QLabel*>())
+        if (label->accessibleName() == name)
+            return label;
+    return nullptr;
+}
+
+/// Under gravity: a blue box resting on a fixed floor, so both are in contact at every step.
+model::World restingBoxWorld()
+{
+    model::World world;
+    model::Body floor = test::makeBody("floor", model::Box{6, 0.5}, impetus::Vec2(0, -0.25), true);
+    world.bodies.push_back(floor);
+    model::Body box = test::makeBody("box", model::Box{1.5, 1.5}, impetus::Vec2(0, 0.75));
+    box.color = model::Color{0x3b, 0x82, 0xf6};
+    world.bodies.push_back(box);
+    return world;
+}
+
+/// Of the pixels well inside body `index`'s outline on the canvas as shown: the share that is the
+/// collision red, and the share that is near-black.
+struct InsideColours {
+    double red = 0;
+    double dark = 0;
+};
+
+InsideColours coloursInside(view::CanvasView& canvas, std::size_t index)
+{
+    const QImage image = canvas.grab().toImage();
+    const QRectF scene = canvas.bodyItems()[index]->sceneBoundingRect();
+    QRectF pixels = QRectF(canvas.toView(scene.topLeft()), canvas.toView(scene.bottomRight())).normalized();
+    // Away from the outline, whose thickness is not what is measured here.
+    pixels = pixels.adjusted(pixels.width() / 5, pixels.height() / 5, -pixels.width() / 5, -pixels.height() / 5);
+    int red = 0;
+    int dark = 0;
+    int all = 0;
+    const qreal ratio = image.devicePixelRatio();
+    for (int y = static_cast<int>(pixels.top() * ratio); y < static_cast<int>(pixels.bottom() * ratio); ++y) {
+        for (int x = static_cast<int>(pixels.left() * ratio); x < static_cast<int>(pixels.right() * ratio); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            ++all;
+            if (c.red() > 180 && c.green() < 90 && c.blue() < 90)
+                ++red;
+            else if (c.red() < 70 && c.green() < 70 && c.blue() < 70)
+                ++dark;
+        }
+    }
+    if (all == 0)
+        return {};
+    return {static_cast<double>(red) / all, static_cast<double>(dark) / all};
+}
+
+} // namespace
+
+class ProjectorModeTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void f11EnlargesTheReadoutsAndGoesFullScreen();
+    void projectorModeIsRememberedForTheNextWindow();
+    void collidingBodyIsHatchedBesidesRed();
+
+private:
+    static bool showActive(MainWindow& window);
+
+    test::TemporarySettings m_settings;
+};
+
+bool ProjectorModeTest::showActive(MainWindow& window)
+{
+    window.resize(900, 650);
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
+void ProjectorModeTest::f11EnlargesTheReadoutsAndGoesFullScreen()
+{
+    MainWindow window;
+    window.setScene(restingBoxWorld(), QStringLiteral("box"));
+    QVERIFY(showActive(window));
+    QLabel* time = statusLabel(window, QStringLiteral("Simulated time"));
+    QLabel* energy = statusLabel(window, QStringLiteral("Total energy"));
+    QVERIFY(time && energy);
+    const double readoutBefore = time->font().pointSizeF();
+    const double menuBefore = window.menuBar()->font().pointSizeF();
+    const int readoutHeightBefore = time->sizeHint().height();
+    QVERIFY(readoutBefore > 0);
+    QVERIFY(!window.isFullScreen());
+    QCOMPARE(window.canvas().look(), view::CanvasLook{});
+
+    QTest::keyClick(&window.canvas(), Qt::Key_F11);
+
+    auto* action = window.findChild<QAction*>(QStringLiteral("projectorModeAction"));
+    QVERIFY(action && action->isChecked());
+    QCOMPARE(time->font().pointSizeF(), readoutBefore * constants::kProjectorReadoutScale);
+    QCOMPARE(energy->font().pointSizeF(), readoutBefore * constants::kProjectorReadoutScale);
+    QVERIFY(time->sizeHint().height() > readoutHeightBefore);
+    QCOMPARE(window.menuBar()->font().pointSizeF(), menuBefore * constants::kProjectorFontScale);
+    QVERIFY(window.windowState() & Qt::WindowFullScreen);
+    QCOMPARE(window.canvas().look(), view::CanvasLook::projector());
+    QVERIFY(window.canvas().look().lineScale > 1);
+
+    // F11 again gives the window back as it was.
+    QTest::keyClick(&window.canvas(), Qt::Key_F11);
+    QVERIFY(!action->isChecked());
+    QCOMPARE(time->font().pointSizeF(), readoutBefore);
+    QCOMPARE(window.menuBar()->font().pointSizeF(), menuBefore);
+    QVERIFY(!(window.windowState() & Qt::WindowFullScreen));
+    QCOMPARE(window.canvas().look(), view::CanvasLook{});
+}
+
+void ProjectorModeTest::projectorModeIsRememberedForTheNextWindow()
+{
+    double normalReadout = 0;
+    {
+        MainWindow window;
+        normalReadout = statusLabel(window, QStringLiteral("Simulated time"))->font().pointSizeF();
+        window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+        QVERIFY(QSettings().value(QLatin1String(view::kProjectorSettingKey)).toBool());
+    }
+    {
+        MainWindow window;
+        QVERIFY(window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->isChecked());
+        QCOMPARE(statusLabel(window, QStringLiteral("Simulated time"))->font().pointSizeF(),
+                 normalReadout * constants::kProjectorReadoutScale);
+        QCOMPARE(window.canvas().look(), view::CanvasLook::projector());
+        window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+    }
+    QVERIFY(!QSettings().value(QLatin1String(view::kProjectorSettingKey)).toBool());
+    MainWindow window;
+    QVERIFY(!window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->isChecked());
+}
+
+void ProjectorModeTest::collidingBodyIsHatchedBesidesRed()
+{
+    MainWindow window;
+    window.setScene(restingBoxWorld(), QStringLiteral("box"));
+    QVERIFY(showActive(window));
+    window.stepAction()->trigger();
+    QTRY_VERIFY(window.runner().world().stepCount == 1);
+    view::CanvasView& canvas = window.canvas();
+    QVERIFY(canvas.bodyItems()[1]->isColliding());
+
+    // The normal look: the colliding box is plain red inside.
+    const InsideColours normal = coloursInside(canvas, 1);
+    QVERIFY2(normal.red > 0.9, qPrintable(QString::number(normal.red)));
+    QVERIFY2(normal.dark < 0.01, qPrintable(QString::number(normal.dark)));
+
+    // Projector mode: still red, with a dark cross-hatch over it.
+    window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+    const InsideColours projector = coloursInside(canvas, 1);
+    QVERIFY2(projector.red > 0.5, qPrintable(QString::number(projector.red)));
+    QVERIFY2(projector.dark > 0.05, qPrintable(QString::number(projector.dark)));
+
+    // A body that does not collide gets no hatch: the hatch means "colliding".
+    window.setScene(restingBoxWorld(), QStringLiteral("box"));
+    QVERIFY(!canvas.bodyItems()[1]->isColliding());
+    QVERIFY2(coloursInside(canvas, 1).dark < 0.01, "a body at rest before any step is hatched");
+    window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+}
+
+QTEST_MAIN(ProjectorModeTest)
+#include "projector_mode_test.moc"
