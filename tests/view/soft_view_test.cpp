@@ -14,6 +14,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -148,14 +149,15 @@ void SoftViewTest::statusBarShowsDensityAndAutoChoice()
     QVERIFY(grid);
     QVERIFY(grid->ellipsesPerSquareMeter >= 64 && grid->ellipsesPerSquareMeter <= 1024);
     QVERIFY(label->text().contains(QStringLiteral("(auto)")));
-    QVERIFY(label->text().contains(QString::number(grid->ellipsesPerSquareMeter)));
+    // In the locale's number format, as every readout (1,024 in English, 1.024 in German).
+    QVERIFY(label->text().contains(QLocale().toString(grid->ellipsesPerSquareMeter, 'g', 4)));
     // The pane says it too, once the body is selected.
     window.document().setSelection(view::Selection{{1}, {}, {}});
     auto* paneGrid = window.propertyPane()->findChild<QLabel*>(QStringLiteral("softGrid"));
     QVERIFY(paneGrid);
     QVERIFY(paneGrid->isVisible() || !window.isVisible());
     QVERIFY(paneGrid->text().contains(QStringLiteral("auto")));
-    QVERIFY(paneGrid->text().contains(QString::number(grid->size())));
+    QVERIFY(paneGrid->text().contains(QLocale().toString(static_cast<qulonglong>(grid->size()))));
 
     // A world without soft bodies hides it.
     model::World rigid = softBoxWorld();
