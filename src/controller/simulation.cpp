@@ -21,6 +21,18 @@ double millisecondsSince(Clock::time_point start)
 
 } // namespace
 
+Scalar fastestTravel(const model::World& world, Scalar h)
+{
+    Scalar fastest = 0;
+    for (const model::Body& body : world.bodies) {
+        if (!body.fixed) {
+            fastest = std::max(fastest, body.state.velocity.norm() +
+                                            std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
+        }
+    }
+    return fastest * h;
+}
+
 int solverSubsteps(Scalar h, Scalar maxSubstep)
 {
     if (!(h > 0) || !(maxSubstep > 0))
@@ -543,11 +555,13 @@ void Simulation::step(model::World& world)
     const int substeps = substepsFor(world, collided);
     m_profile.substeps = substeps;
     const Scalar startTime = world.time;
-    // A split step of a rigid world finds its contacts once, with margins for the whole step, and
-    // its later substeps refresh them (ContactSolver::refresh): one collision pass and one build a
-    // step, as Box2D v3 does. A soft body's ellipses move too far against each other within a
-    // step for that, so a world with soft bodies finds them again every substep.
-    const bool reuse = substeps > 1 && world.softBodies.empty();
+    // A split step of a rigid world at rest or nearly (a pile, a stack) finds its contacts once,
+    // with margins for the whole step, and its later substeps refresh them (ContactSolver::refresh):
+    // one collision pass and one build a step, as Box2D v3 does. Where bodies move fast the whole
+    // step's margins would make many more speculative contacts than they save
+    // (constants::kReuseContactsMaxTravel), and a soft body's ellipses move too far against each
+    // other within a step: those steps find their contacts again every substep.
+    const bool reuse = substeps > 1 && world.softBodies.empty() && fastestTravel(world, h) <= constants::kReuseContactsMaxTravel;
     for (int k = 1; k <= substeps; ++k) {
         // The last substep lands exactly on t + h, whatever the rounding of h/substeps.
         const Scalar endTime = k == substeps ? startTime + h : startTime + k * (h / substeps);

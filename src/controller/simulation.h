@@ -35,8 +35,9 @@ struct StepProfile {
     int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
     int impacts = 0; ///< impacts resolved
     int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
-    /// Collision passes (broad and narrow phase) the step ran: one for a rigid world however many
-    /// substeps it takes; one per substep with soft bodies.
+    /// Collision passes (broad and narrow phase) the step ran: one for a rigid world at rest or
+    /// nearly however many substeps it takes; one per substep where bodies move fast or with soft
+    /// bodies (Simulation::step).
     int collisionPasses = 0;
 };
 
@@ -59,6 +60,10 @@ struct SolverSettings {
 /// ⌈h / maxSubstep⌉, 1 for h ≤ maxSubstep (a step a hair longer by rounding, such as 4 × (1/240)
 /// against 1/60, is not split again), and at most constants::kMaxSolverSubsteps.
 int solverSubsteps(Scalar h, Scalar maxSubstep);
+
+/// How far the fastest movable body of `world` travels in h seconds at its present speed, m: its
+/// speed plus its spin times its bounding radius, times h.
+Scalar fastestTravel(const model::World& world, Scalar h);
 
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built
 /// into grids on the first step that needs them (prepareSoftBodies). A step is split into equal
