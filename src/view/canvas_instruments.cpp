@@ -107,7 +107,42 @@ void CanvasInstruments::setShowVector(VectorKind kind, bool on)
     refresh();
 }
 
-bool CanvasInstruments::showsAnyVector() const { return std::ranges::any_of(m_shown, [](bool on) { return on; }); }
+bool CanvasInstruments::showsAnyVector() const
+{
+    return std::ranges::any_of(m_shown, [](bool on) { return on; }) || !m_bodyShown.empty();
+}
+
+bool CanvasInstruments::showsBodyVector(const std::string& name, VectorKind kind) const
+{
+    const auto it = m_bodyShown.find(name);
+    return it != m_bodyShown.end() && it->second[index(kind)];
+}
+
+void CanvasInstruments::setBodyVector(const std::string& name, VectorKind kind, bool on)
+{
+    if (showsBodyVector(name, kind) == on)
+        return;
+    std::array<bool, kVectorKindCount>& kinds = m_bodyShown[name];
+    kinds[index(kind)] = on;
+    // An entry only for bodies that ask for something: painting skips the look-ups when none do.
+    if (std::ranges::none_of(kinds, [](bool shown) { return shown; }))
+        m_bodyShown.erase(name);
+    refresh();
+}
+
+bool CanvasInstruments::drawsVector(std::size_t body, VectorKind kind) const
+{
+    if (m_shown[index(kind)] && drawsBody(body))
+        return true;
+    const model::World& world = m_runner.world();
+    return !m_bodyShown.empty() && body < world.bodies.size() && showsBodyVector(world.bodies[body].name, kind);
+}
+
+bool CanvasInstruments::drawsKindAnywhere(VectorKind kind) const
+{
+    return m_shown[index(kind)] ||
+           std::ranges::any_of(m_bodyShown, [kind](const auto& entry) { return entry.second[index(kind)]; });
+}
 
 double CanvasInstruments::vectorScale(VectorKind kind) const
 {
@@ -206,8 +241,8 @@ void CanvasInstruments::refresh()
     const model::World& world = m_runner.world();
     if (m_trails && m_trailPoints.size() != world.bodies.size())
         startTrails(); // a body came or went: indices moved, start afresh
-    const bool forces = showsVector(VectorKind::Acceleration) || showsVector(VectorKind::NetForce) ||
-                        showsVector(VectorKind::ForceParts);
+    const bool forces = drawsKindAnywhere(VectorKind::Acceleration) || drawsKindAnywhere(VectorKind::NetForce) ||
+                        drawsKindAnywhere(VectorKind::ForceParts);
     if (forces)
         m_forces = controller::reportForces(world);
     else
@@ -217,6 +252,7 @@ void CanvasInstruments::refresh()
 
 void CanvasInstruments::clear()
 {
+    m_bodyShown.clear();
     m_trailPoints.clear();
     if (m_trails)
         startTrails();
@@ -281,20 +317,20 @@ void CanvasInstruments::paintVectors(QPainter& painter) const
     const bool forces = m_forces.size() == world.bodies.size();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
-        if (body.fixed || !drawsBody(i))
+        if (body.fixed)
             continue;
         const Vec2 at = body.state.position;
-        if (forces && showsVector(VectorKind::ForceParts)) {
+        if (forces && drawsVector(i, VectorKind::ForceParts)) {
             for (const ForcePart& part : forceParts())
                 arrow(at, m_forces[i].*part.member, VectorKind::ForceParts, part.color);
         }
-        if (forces && showsVector(VectorKind::NetForce))
+        if (forces && drawsVector(i, VectorKind::NetForce))
             arrow(at, m_forces[i].net(), VectorKind::NetForce, constants::kNetForceColor);
-        if (forces && showsVector(VectorKind::Acceleration))
+        if (forces && drawsVector(i, VectorKind::Acceleration))
             arrow(at, m_forces[i].acceleration, VectorKind::Acceleration, constants::kAccelerationColor);
-        if (showsVector(VectorKind::Momentum))
+        if (drawsVector(i, VectorKind::Momentum))
             arrow(at, body.mass * body.state.velocity, VectorKind::Momentum, constants::kMomentumColor);
-        if (showsVector(VectorKind::Velocity))
+        if (drawsVector(i, VectorKind::Velocity))
             arrow(at, body.state.velocity, VectorKind::Velocity, constants::kVelocityColor);
     }
     painter.restore();
@@ -306,17 +342,17 @@ QStringList CanvasInstruments::legendLines() const
     const auto scaleText = [&](VectorKind kind) {
         return tr("1 %1 = %2 m").arg(unitOf(kind)).arg(vectorScale(kind), 0, 'g', 3);
     };
-    if (showsVector(VectorKind::Velocity))
+    if (drawsKindAnywhere(VectorKind::Velocity))
         lines << tr("velocity: %1").arg(scaleText(VectorKind::Velocity));
-    if (showsVector(VectorKind::Acceleration))
+    if (drawsKindAnywhere(VectorKind::Acceleration))
         lines << tr("acceleration: %1").arg(scaleText(VectorKind::Acceleration));
-    if (showsVector(VectorKind::NetForce))
+    if (drawsKindAnywhere(VectorKind::NetForce))
         lines << tr("net force: %1").arg(scaleText(VectorKind::NetForce));
-    if (showsVector(VectorKind::ForceParts)) {
+    if (drawsKindAnywhere(VectorKind::ForceParts)) {
         for (const ForcePart& part : forceParts())
             lines << tr("%1: %2").arg(part.name, scaleText(VectorKind::ForceParts));
     }
-    if (showsVector(VectorKind::Momentum))
+    if (drawsKindAnywhere(VectorKind::Momentum))
         lines << tr("momentum: %1").arg(scaleText(VectorKind::Momentum));
     return lines;
 }
@@ -327,17 +363,17 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     if (lines.isEmpty())
         return;
     std::vector<QColor> colours;
-    if (showsVector(VectorKind::Velocity))
+    if (drawsKindAnywhere(VectorKind::Velocity))
         colours.push_back(constants::kVelocityColor);
-    if (showsVector(VectorKind::Acceleration))
+    if (drawsKindAnywhere(VectorKind::Acceleration))
         colours.push_back(constants::kAccelerationColor);
-    if (showsVector(VectorKind::NetForce))
+    if (drawsKindAnywhere(VectorKind::NetForce))
         colours.push_back(constants::kNetForceColor);
-    if (showsVector(VectorKind::ForceParts)) {
+    if (drawsKindAnywhere(VectorKind::ForceParts)) {
         for (const ForcePart& part : forceParts())
             colours.push_back(part.color);
     }
-    if (showsVector(VectorKind::Momentum))
+    if (drawsKindAnywhere(VectorKind::Momentum))
         colours.push_back(constants::kMomentumColor);
 
     painter.save();
