@@ -19,10 +19,19 @@ namespace {
 constexpr double kMaxHeadFraction = 0.6;
 /// The legend's sample arrows are this many head lengths long.
 constexpr double kSwatchHeads = 3;
+/// Trail points closer than this to the last point drawn are left out of the line, px.
+constexpr double kTrailMinSegmentPx = 1.0;
 /// The legend's paper: white, slightly see-through so the grid shows it is an overlay.
 const QColor kLegendFill(255, 255, 255, 225);
 
 QPointF toPoint(const Vec2& v) { return QPointF(v.x(), v.y()); }
+
+/// |a − b|², px²: trails compare millions of distances a paint, with no square root needed.
+double squaredDistance(const QPointF& a, const QPointF& b)
+{
+    const QPointF d = a - b;
+    return QPointF::dotProduct(d, d);
+}
 
 /// An arrow from `from` to `to` (px) with a filled head, in `color`; drawn dashed when `clipped`.
 void drawArrow(QPainter& painter, QPointF from, QPointF to, const QColor& color)
@@ -282,14 +291,29 @@ void CanvasInstruments::paintTrails(QPainter& painter) const
         const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
         QPolygonF line;
         std::vector<QPointF> dots;
+        QPointF skipped; // the last point left out of the line, px
+        bool pending = false;
         for (const TrailPoint& point : m_trailPoints[i]) {
             if (point.step > shown)
                 break; // scrubbed back: the trail ends where the body is
             const QPointF px = toPixels.map(point.position);
-            line << px;
-            if (point.step % m_dotSteps == 0)
+            // A point within a pixel of the last one drawn adds nothing to see and costs a joint
+            // to stroke: a body at rest would pile up thousands in one place.
+            if (!line.isEmpty() && squaredDistance(line.back(), px) < kTrailMinSegmentPx * kTrailMinSegmentPx) {
+                skipped = px;
+                pending = true;
+            } else {
+                line << px;
+                pending = false;
+            }
+            // A dot that would overlap the last one drawn adds nothing: a body at rest would
+            // stack a dot every 0.1 s on one spot.
+            if (point.step % m_dotSteps == 0 &&
+                (dots.empty() || squaredDistance(dots.back(), px) >= 4 * constants::kTrailDotRadiusPx * constants::kTrailDotRadiusPx))
                 dots.push_back(px);
         }
+        if (pending)
+            line << skipped; // the trail still ends at the body
         painter.setPen(QPen(colour, constants::kTrailWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
