@@ -19,10 +19,19 @@ namespace {
 constexpr double kMaxHeadFraction = 0.6;
 /// The legend's sample arrows are this many head lengths long.
 constexpr double kSwatchHeads = 3;
+/// Trail points closer than this to the last point drawn are left out of the line, px.
+constexpr double kTrailMinSegmentPx = 1.0;
 /// The legend's paper: white, slightly see-through so the grid shows it is an overlay.
 const QColor kLegendFill(255, 255, 255, 225);
 
 QPointF toPoint(const Vec2& v) { return QPointF(v.x(), v.y()); }
+
+/// |a − b|², px²: trails compare millions of distances a paint, with no square root needed.
+double squaredDistance(const QPointF& a, const QPointF& b)
+{
+    const QPointF d = a - b;
+    return QPointF::dotProduct(d, d);
+}
 
 /// An arrow from `from` to `to` (px) with a filled head, in `color`; drawn dashed when `clipped`.
 void drawArrow(QPainter& painter, QPointF from, QPointF to, const QColor& color)
@@ -107,7 +116,42 @@ void CanvasInstruments::setShowVector(VectorKind kind, bool on)
     refresh();
 }
 
-bool CanvasInstruments::showsAnyVector() const { return std::ranges::any_of(m_shown, [](bool on) { return on; }); }
+bool CanvasInstruments::showsAnyVector() const
+{
+    return std::ranges::any_of(m_shown, [](bool on) { return on; }) || !m_bodyShown.empty();
+}
+
+bool CanvasInstruments::showsBodyVector(const std::string& name, VectorKind kind) const
+{
+    const auto it = m_bodyShown.find(name);
+    return it != m_bodyShown.end() && it->second[index(kind)];
+}
+
+void CanvasInstruments::setBodyVector(const std::string& name, VectorKind kind, bool on)
+{
+    if (showsBodyVector(name, kind) == on)
+        return;
+    std::array<bool, kVectorKindCount>& kinds = m_bodyShown[name];
+    kinds[index(kind)] = on;
+    // An entry only for bodies that ask for something: painting skips the look-ups when none do.
+    if (std::ranges::none_of(kinds, [](bool shown) { return shown; }))
+        m_bodyShown.erase(name);
+    refresh();
+}
+
+bool CanvasInstruments::drawsVector(std::size_t body, VectorKind kind) const
+{
+    if (m_shown[index(kind)] && drawsBody(body))
+        return true;
+    const model::World& world = m_runner.world();
+    return !m_bodyShown.empty() && body < world.bodies.size() && showsBodyVector(world.bodies[body].name, kind);
+}
+
+bool CanvasInstruments::drawsKindAnywhere(VectorKind kind) const
+{
+    return m_shown[index(kind)] ||
+           std::ranges::any_of(m_bodyShown, [kind](const auto& entry) { return entry.second[index(kind)]; });
+}
 
 double CanvasInstruments::vectorScale(VectorKind kind) const
 {
@@ -206,8 +250,8 @@ void CanvasInstruments::refresh()
     const model::World& world = m_runner.world();
     if (m_trails && m_trailPoints.size() != world.bodies.size())
         startTrails(); // a body came or went: indices moved, start afresh
-    const bool forces = showsVector(VectorKind::Acceleration) || showsVector(VectorKind::NetForce) ||
-                        showsVector(VectorKind::ForceParts);
+    const bool forces = drawsKindAnywhere(VectorKind::Acceleration) || drawsKindAnywhere(VectorKind::NetForce) ||
+                        drawsKindAnywhere(VectorKind::ForceParts);
     if (forces)
         m_forces = controller::reportForces(world);
     else
@@ -217,6 +261,7 @@ void CanvasInstruments::refresh()
 
 void CanvasInstruments::clear()
 {
+    m_bodyShown.clear();
     m_trailPoints.clear();
     if (m_trails)
         startTrails();
@@ -246,14 +291,29 @@ void CanvasInstruments::paintTrails(QPainter& painter) const
         const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
         QPolygonF line;
         std::vector<QPointF> dots;
+        QPointF skipped; // the last point left out of the line, px
+        bool pending = false;
         for (const TrailPoint& point : m_trailPoints[i]) {
             if (point.step > shown)
                 break; // scrubbed back: the trail ends where the body is
             const QPointF px = toPixels.map(point.position);
-            line << px;
-            if (point.step % m_dotSteps == 0)
+            // A point within a pixel of the last one drawn adds nothing to see and costs a joint
+            // to stroke: a body at rest would pile up thousands in one place.
+            if (!line.isEmpty() && squaredDistance(line.back(), px) < kTrailMinSegmentPx * kTrailMinSegmentPx) {
+                skipped = px;
+                pending = true;
+            } else {
+                line << px;
+                pending = false;
+            }
+            // A dot that would overlap the last one drawn adds nothing: a body at rest would
+            // stack a dot every 0.1 s on one spot.
+            if (point.step % m_dotSteps == 0 &&
+                (dots.empty() || squaredDistance(dots.back(), px) >= 4 * constants::kTrailDotRadiusPx * constants::kTrailDotRadiusPx))
                 dots.push_back(px);
         }
+        if (pending)
+            line << skipped; // the trail still ends at the body
         painter.setPen(QPen(colour, constants::kTrailWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
@@ -281,20 +341,20 @@ void CanvasInstruments::paintVectors(QPainter& painter) const
     const bool forces = m_forces.size() == world.bodies.size();
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
-        if (body.fixed || !drawsBody(i))
+        if (body.fixed)
             continue;
         const Vec2 at = body.state.position;
-        if (forces && showsVector(VectorKind::ForceParts)) {
+        if (forces && drawsVector(i, VectorKind::ForceParts)) {
             for (const ForcePart& part : forceParts())
                 arrow(at, m_forces[i].*part.member, VectorKind::ForceParts, part.color);
         }
-        if (forces && showsVector(VectorKind::NetForce))
+        if (forces && drawsVector(i, VectorKind::NetForce))
             arrow(at, m_forces[i].net(), VectorKind::NetForce, constants::kNetForceColor);
-        if (forces && showsVector(VectorKind::Acceleration))
+        if (forces && drawsVector(i, VectorKind::Acceleration))
             arrow(at, m_forces[i].acceleration, VectorKind::Acceleration, constants::kAccelerationColor);
-        if (showsVector(VectorKind::Momentum))
+        if (drawsVector(i, VectorKind::Momentum))
             arrow(at, body.mass * body.state.velocity, VectorKind::Momentum, constants::kMomentumColor);
-        if (showsVector(VectorKind::Velocity))
+        if (drawsVector(i, VectorKind::Velocity))
             arrow(at, body.state.velocity, VectorKind::Velocity, constants::kVelocityColor);
     }
     painter.restore();
@@ -306,17 +366,17 @@ QStringList CanvasInstruments::legendLines() const
     const auto scaleText = [&](VectorKind kind) {
         return tr("1 %1 = %2 m").arg(unitOf(kind)).arg(vectorScale(kind), 0, 'g', 3);
     };
-    if (showsVector(VectorKind::Velocity))
+    if (drawsKindAnywhere(VectorKind::Velocity))
         lines << tr("velocity: %1").arg(scaleText(VectorKind::Velocity));
-    if (showsVector(VectorKind::Acceleration))
+    if (drawsKindAnywhere(VectorKind::Acceleration))
         lines << tr("acceleration: %1").arg(scaleText(VectorKind::Acceleration));
-    if (showsVector(VectorKind::NetForce))
+    if (drawsKindAnywhere(VectorKind::NetForce))
         lines << tr("net force: %1").arg(scaleText(VectorKind::NetForce));
-    if (showsVector(VectorKind::ForceParts)) {
+    if (drawsKindAnywhere(VectorKind::ForceParts)) {
         for (const ForcePart& part : forceParts())
             lines << tr("%1: %2").arg(part.name, scaleText(VectorKind::ForceParts));
     }
-    if (showsVector(VectorKind::Momentum))
+    if (drawsKindAnywhere(VectorKind::Momentum))
         lines << tr("momentum: %1").arg(scaleText(VectorKind::Momentum));
     return lines;
 }
@@ -327,17 +387,17 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     if (lines.isEmpty())
         return;
     std::vector<QColor> colours;
-    if (showsVector(VectorKind::Velocity))
+    if (drawsKindAnywhere(VectorKind::Velocity))
         colours.push_back(constants::kVelocityColor);
-    if (showsVector(VectorKind::Acceleration))
+    if (drawsKindAnywhere(VectorKind::Acceleration))
         colours.push_back(constants::kAccelerationColor);
-    if (showsVector(VectorKind::NetForce))
+    if (drawsKindAnywhere(VectorKind::NetForce))
         colours.push_back(constants::kNetForceColor);
-    if (showsVector(VectorKind::ForceParts)) {
+    if (drawsKindAnywhere(VectorKind::ForceParts)) {
         for (const ForcePart& part : forceParts())
             colours.push_back(part.color);
     }
-    if (showsVector(VectorKind::Momentum))
+    if (drawsKindAnywhere(VectorKind::Momentum))
         colours.push_back(constants::kMomentumColor);
 
     painter.save();

@@ -17,6 +17,8 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <map>
+#include <string>
 #include <vector>
 
 class QPainter;
@@ -43,8 +45,9 @@ struct TrailPoint {
 
 /// The canvas's measuring overlays for one SimulationRunner's world.
 ///
-/// Arrows: each kind is drawn for every dynamic body (or only the selected ones, see
-/// setSelectedOnly()), from its centre of mass, with a length of value × scale metres on the
+/// Arrows: each kind shown (setShowVector(), the View menu) is drawn for every dynamic body (or only
+/// the selected ones, see setSelectedOnly()), and each kind a body asks for (setBodyVector(), the
+/// attribute pane) for that body as well, from its centre of mass, with a length of value × scale metres on the
 /// canvas, so that they grow and shrink with the zoom like the bodies; their width and heads stay
 /// the same on screen, and an arrow shorter than constants::kMinArrowPx is left out. Forces come
 /// from the engine (controller::reportForces), computed once per state shown. A legend in the
@@ -63,8 +66,15 @@ public:
 
     bool showsVector(VectorKind kind) const { return m_shown[index(kind)]; }
     void setShowVector(VectorKind kind, bool on);
-    /// True when any vector kind is shown.
+    /// True when any vector kind is shown, for every body or for some.
     bool showsAnyVector() const;
+
+    /// Whether body `name` shows arrows of `kind` whatever setShowVector() says (false by default).
+    /// Kept by name, so that it survives other bodies coming and going; a new scene forgets it.
+    bool showsBodyVector(const std::string& name, VectorKind kind) const;
+    void setBodyVector(const std::string& name, VectorKind kind, bool on);
+    /// True when body i of the world shown gets arrows of `kind` (shown for all or for it).
+    bool drawsVector(std::size_t body, VectorKind kind) const;
 
     /// Metres of arrow per unit of `kind` (m per m/s, per m/s², per N, per kg·m/s); force parts
     /// share the net force's scale.
@@ -126,9 +136,13 @@ private:
     bool drawsBody(std::size_t i) const;
     /// Starts every body's trail at its centre now.
     void startTrails();
+    /// True when `kind` is drawn for some body.
+    bool drawsKindAnywhere(VectorKind kind) const;
 
     const SimulationRunner& m_runner;
     std::array<bool, kVectorKindCount> m_shown{};
+    /// The kinds each body asks for on its own, by body name; bodies asking for none are absent.
+    std::map<std::string, std::array<bool, kVectorKindCount>> m_bodyShown;
     std::array<double, kVectorKindCount> m_scales{};
     bool m_selectedOnly = false;
     Selection m_selection;

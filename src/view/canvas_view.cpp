@@ -13,6 +13,7 @@
 #include "view/tools/joint_tool.h"
 #include "view/tools/measure_tools.h"
 #include "view/tools/polygon_tool.h"
+#include "view/tools/probe_tool.h"
 #include "view/tools/rotate_tool.h"
 #include "view/tools/select_tool.h"
 #include "view/tools/spring_tool.h"
@@ -148,6 +149,7 @@ void CanvasView::setDocument(SceneDocument& document)
     m_tools.push_back(std::make_unique<JointTool>(document, *this, model::JointType::Rod));
     m_tools.push_back(std::make_unique<RulerTool>(document, *this));
     m_tools.push_back(std::make_unique<ProtractorTool>(document, *this));
+    m_tools.push_back(std::make_unique<ProbeTool>(document, *this));
     m_tool = m_tools.front().get();
     viewport()->setCursor(m_tool->cursorShape());
     connect(m_document, &SceneDocument::selectionChanged, this, &CanvasView::showSelection);

@@ -32,7 +32,6 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
-#include <QStyle>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
@@ -68,6 +67,9 @@ const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kWindowStateKey = QStringLiteral("window/state");
 const QString kSnapKey = QStringLiteral("view/snapToGrid");
+
+/// The icon `name` drawn for Impetus (resources/icons/tools/NAME.svg).
+QIcon impetusIcon(const QString& name) { return QIcon(QStringLiteral(":/icons/tools/%1.svg").arg(name)); }
 
 } // namespace
 
@@ -211,23 +213,23 @@ void MainWindow::createActions()
     m_frameAction->setStatusTip(tr("Zoom to show every body"));
     connect(m_frameAction, &QAction::triggered, m_canvas, &CanvasView::frameScene);
 
-    m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"), this);
+    m_playAction = new QAction(impetusIcon(QStringLiteral("play")), tr("Play"), this);
     m_playAction->setCheckable(true);
     m_playAction->setShortcut(QKeySequence(Qt::Key_Space));
     m_playAction->setToolTip(tr("Run the simulation (Space)"));
     connect(m_playAction, &QAction::toggled, &m_document->runner(), &SimulationRunner::setRunning);
 
-    m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("Step"), this);
+    m_stepAction = new QAction(impetusIcon(QStringLiteral("step")), tr("Step"), this);
     m_stepAction->setShortcut(QKeySequence(Qt::Key_Right));
     m_stepAction->setToolTip(tr("Advance one time step (→)"));
     connect(m_stepAction, &QAction::triggered, m_document, &SceneDocument::stepOnce);
 
-    m_stepBackAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Step Back"), this);
+    m_stepBackAction = new QAction(impetusIcon(QStringLiteral("step-back")), tr("Step Back"), this);
     m_stepBackAction->setShortcut(QKeySequence(Qt::Key_Left));
     m_stepBackAction->setToolTip(tr("Go back one time step along the timeline (←)"));
     connect(m_stepBackAction, &QAction::triggered, this, [this] { m_timeline->stepBack(); });
 
-    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Reset"), this);
+    m_resetAction = new QAction(impetusIcon(QStringLiteral("reset")), tr("Reset"), this);
     m_resetAction->setShortcut(QKeySequence(Qt::Key_R));
     m_resetAction->setToolTip(tr("Go back to the state at the last Play (R)"));
     connect(m_resetAction, &QAction::triggered, m_document, &SceneDocument::resetToLastPlay);
@@ -258,27 +260,37 @@ void MainWindow::createToolActions()
         QString text;
         Qt::Key key;
         QString tip;
+        QString icon; ///< resources/icons/tools/ICON.svg
     };
     const ToolEntry entries[] = {
-        {ToolKind::Select, tr("Select"), Qt::Key_S, tr("Select, move (drag) and nudge (arrow keys); Ctrl+drag turns")},
-        {ToolKind::Rotate, tr("Rotate"), Qt::Key_T, tr("Drag to turn a body or the selection about its centre")},
+        {ToolKind::Select, tr("Select"), Qt::Key_S, tr("Select, move (drag) and nudge (arrow keys); Ctrl+drag turns"),
+         QStringLiteral("select")},
+        {ToolKind::Rotate, tr("Rotate"), Qt::Key_T, tr("Drag to turn a body or the selection about its centre"),
+         QStringLiteral("rotate")},
         {ToolKind::Polygon, tr("Polygon"), Qt::Key_P,
-         tr("Click the corners; click the first one, press Enter or double-click to close")},
-        {ToolKind::Box, tr("Box"), Qt::Key_B, tr("Drag from corner to corner")},
-        {ToolKind::Circle, tr("Circle"), Qt::Key_C, tr("Drag from the centre out")},
-        {ToolKind::Ellipse, tr("Ellipse"), Qt::Key_E, tr("Drag out its bounding box")},
-        {ToolKind::Spring, tr("Spring"), Qt::Key_K, tr("Drag from a body to another body or to a point")},
-        {ToolKind::Pin, tr("Pin"), Qt::Key_N, tr("Click on a body to hinge it to the body below or the world")},
-        {ToolKind::Rod, tr("Rod"), Qt::Key_L, tr("Drag from a body to another body or to a point")},
+         tr("Click the corners; click the first one, press Enter or double-click to close"), QStringLiteral("polygon")},
+        {ToolKind::Box, tr("Box"), Qt::Key_B, tr("Drag from corner to corner"), QStringLiteral("box")},
+        {ToolKind::Circle, tr("Circle"), Qt::Key_C, tr("Drag from the centre out"), QStringLiteral("circle")},
+        {ToolKind::Ellipse, tr("Ellipse"), Qt::Key_E, tr("Drag out its bounding box"), QStringLiteral("ellipse")},
+        {ToolKind::Spring, tr("Spring"), Qt::Key_K, tr("Drag from a body to another body or to a point"),
+         QStringLiteral("spring")},
+        {ToolKind::Pin, tr("Pin"), Qt::Key_N, tr("Click on a body to hinge it to the body below or the world"),
+         QStringLiteral("pin")},
+        {ToolKind::Rod, tr("Rod"), Qt::Key_L, tr("Drag from a body to another body or to a point"),
+         QStringLiteral("rod")},
         {ToolKind::Ruler, tr("Ruler"), Qt::Key_M,
-         tr("Click two points, or drag: the distance in metres; snaps to body centres and corners")},
+         tr("Click two points, or drag: the distance in metres; snaps to body centres and corners"),
+         QStringLiteral("ruler")},
         {ToolKind::Protractor, tr("Protractor"), Qt::Key_A,
-         tr("Click the vertex, then a point on each arm: the angle in degrees")},
+         tr("Click the vertex, then a point on each arm: the angle in degrees"), QStringLiteral("protractor")},
+        {ToolKind::Probe, tr("Probe"), Qt::Key_I,
+         tr("Click a body to read its position, velocity, energies and collisions as it moves"),
+         QStringLiteral("probe")},
     };
     m_toolGroup = new QActionGroup(this);
     m_toolGroup->setExclusive(true);
     for (const ToolEntry& entry : entries) {
-        auto* action = new QAction(entry.text, m_toolGroup);
+        auto* action = new QAction(impetusIcon(entry.icon), entry.text, m_toolGroup);
         action->setCheckable(true);
         action->setShortcut(QKeySequence(entry.key));
         action->setToolTip(tr("%1 (%2): %3").arg(entry.text, QKeySequence(entry.key).toString(QKeySequence::NativeText),
@@ -519,7 +531,9 @@ void MainWindow::createToolBars()
     QToolBar* toolBar = new QToolBar(tr("Tools"), this);
     toolBar->setObjectName(QStringLiteral("drawingTools"));
     toolBar->setAccessibleName(tr("Drawing tools"));
-    toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    // Icons only, each naming its tool and shortcut in its tooltip: a column of words was long and
+    // hard to scan.
+    toolBar->setToolButtonStyle(Qt::ToolButtonIconOnly);
     toolBar->addActions(m_toolGroup->actions());
     for (QAction* action : m_toolGroup->actions()) {
         if (QWidget* button = toolBar->widgetForAction(action))
@@ -543,6 +557,15 @@ void MainWindow::createDock()
     connect(m_pane, &PropertyPane::springEdited, m_document, &SceneDocument::setSpring);
     connect(m_pane, &PropertyPane::jointEdited, m_document, &SceneDocument::setJoint);
     connect(m_pane, &PropertyPane::worldSettingsEdited, m_document, &SceneDocument::setWorldSettings);
+    // A body's own arrows are the canvas's business: the pane reads and sets them there.
+    CanvasInstruments& instruments = m_canvas->instruments();
+    m_pane->setBodyVectorsShown([&instruments](const std::string& name, VectorKind kind) {
+        return instruments.showsBodyVector(name, kind);
+    });
+    connect(m_pane, &PropertyPane::bodyVectorToggled, &instruments,
+            [&instruments](const QString& name, VectorKind kind, bool on) {
+                instruments.setBodyVector(name.toStdString(), kind, on);
+            });
     const auto showSelection = [this] { m_pane->showSelection(m_document->world(), m_document->selection()); };
     connect(m_document, &SceneDocument::selectionChanged, this, showSelection);
     connect(m_document, &SceneDocument::worldChanged, this, showSelection);
@@ -812,7 +835,7 @@ void MainWindow::onRunningChanged(bool running)
     const QSignalBlocker blocker(m_playAction);
     m_playAction->setChecked(running);
     m_playAction->setText(running ? tr("Pause") : tr("Play"));
-    m_playAction->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    m_playAction->setIcon(impetusIcon(running ? QStringLiteral("pause") : QStringLiteral("play")));
     m_playAction->setToolTip(running ? tr("Pause the simulation (Space)") : tr("Run the simulation (Space)"));
     updateStepAction();
 }

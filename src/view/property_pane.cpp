@@ -10,6 +10,8 @@
 #include <QColorDialog>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -457,6 +459,43 @@ void PropertyPane::buildBodyPage()
                                [this] { return m_body.soft.value_or(model::SoftSettings{}).damping; },
                                editBody([](model::Body& b, double v) { b.soft.value().damping = v; },
                                         tr("Change soft damping")));
+
+    // Arrows for this body alone, on top of the View menu's: how the canvas shows the body, not
+    // what it is, so a tick is no edit and has no undo.
+    auto* vectors = named(new QGroupBox(tr("Show vectors")), "bodyVectors", tr("Show vectors"));
+    auto* grid = new QGridLayout(vectors);
+    struct VectorBox {
+        VectorKind kind;
+        QString text;
+        const char* objectName;
+    };
+    const std::array<VectorBox, kVectorKindCount> kinds = {{
+        {VectorKind::Velocity, tr("Velocity"), "bodyVelocityVectors"},
+        {VectorKind::Acceleration, tr("Acceleration"), "bodyAccelerationVectors"},
+        {VectorKind::NetForce, tr("Net force"), "bodyNetForceVectors"},
+        {VectorKind::ForceParts, tr("Force parts"), "bodyForcePartVectors"},
+        {VectorKind::Momentum, tr("Momentum"), "bodyMomentumVectors"},
+    }};
+    constexpr int kColumns = 2;
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        const VectorKind kind = kinds[k].kind;
+        const QString text = kinds[k].text;
+        auto* box = new QCheckBox(text, vectors);
+        box->setObjectName(QString::fromLatin1(kinds[k].objectName));
+        box->setAccessibleName(tr("Show %1 arrows of this body").arg(text.toLower()));
+        grid->addWidget(box, static_cast<int>(k) / kColumns, static_cast<int>(k) % kColumns);
+        connect(box, &QCheckBox::clicked, this,
+                [this, kind](bool on) { emit bodyVectorToggled(toQString(m_body.name), kind, on); });
+        m_bodyVectors[static_cast<std::size_t>(kind)] = box;
+    }
+    form->addRow(vectors);
+}
+
+void PropertyPane::setBodyVectorsShown(std::function<bool(const std::string& name, VectorKind kind)> shown)
+{
+    m_bodyVectorsShown = std::move(shown);
+    if (m_page == Page::Body)
+        display(false);
 }
 
 void PropertyPane::buildSpringPage()
@@ -1001,6 +1040,8 @@ void PropertyPane::displayBody(bool replaceFocused)
     displaySoftDensity(replaceFocused);
     m_softGrid->setText(m_softGridText);
     m_softGrid->setVisible(!m_softGridText.isEmpty());
+    for (std::size_t k = 0; k < kVectorKindCount; ++k)
+        m_bodyVectors[k]->setChecked(m_bodyVectorsShown && m_bodyVectorsShown(m_body.name, static_cast<VectorKind>(k)));
 }
 
 void PropertyPane::displaySoftDensity(bool replaceFocused)

@@ -4,12 +4,14 @@
 /// world when nothing is selected.
 
 #include "model/world.h"
+#include "view/canvas_instruments.h"
 #include "view/selection.h"
 
 #include <QLocale>
 #include <QString>
 #include <QWidget>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -67,6 +69,10 @@ public:
     /// The text of the message area: the last refusal, or empty.
     QString message() const;
 
+    /// Where the body page's "Show vectors" boxes read whether body `name` shows arrows of a kind
+    /// on the canvas (CanvasInstruments::showsBodyVector()); without it they show none ticked.
+    void setBodyVectorsShown(std::function<bool(const std::string& name, VectorKind kind)> shown);
+
 signals:
     /// The user changed body `index`; `body` is the whole new body (derived fields updated with
     /// Body::updateDerived()). Its state is the one of the last showSelection()/refresh().
@@ -79,6 +85,9 @@ signals:
     void jointEdited(int index, const impetus::model::Joint& joint, const QString& actionName);
     /// The user changed the world settings; `settings` are the whole new settings.
     void worldSettingsEdited(const impetus::model::WorldSettings& settings, const QString& actionName);
+    /// The user ticked (`on`) or cleared a "Show vectors" box of body `name`: a view setting, not
+    /// an edit of the body.
+    void bodyVectorToggled(const QString& name, impetus::view::VectorKind kind, bool on);
 
 private:
     /// What the pane shows; also the index of its page in m_pageWidgets.
@@ -196,6 +205,8 @@ private:
     QCheckBox* m_soft = nullptr;
     QLineEdit* m_softDensity = nullptr;
     QLabel* m_softGrid = nullptr; ///< read-only: what the engine built (the "auto" choice)
+    std::array<QCheckBox*, kVectorKindCount> m_bodyVectors{}; ///< "Show vectors", by VectorKind
+    std::function<bool(const std::string&, VectorKind)> m_bodyVectorsShown;
     NumberField* m_softStiffness = nullptr;
     NumberField* m_softDamping = nullptr;
     QLineEdit* m_springBodyA = nullptr;

@@ -260,8 +260,10 @@ inline constexpr std::size_t kMaxTrailPoints = 36000;
 /// The most points all trails keep together, so that trails on a large scene stay small: 4 million
 /// points of 24 bytes (about 100 MB). The 2000-body scene keeps 2000 per body, 8 s at 240 Hz.
 inline constexpr std::size_t kMaxTrailPointsInAll = 4000000;
-/// Trail line width and dot radius, px.
-inline constexpr double kTrailWidthPx = 1.5;
+/// Trail line width and dot radius, px. One pixel keeps the trail on Qt's fast path for thin lines:
+/// at 1.5 px the 2000 trails of the 2000-body scene took 1.3 s a paint after 6 s, at 1 px 0.2 s
+/// (bench/frame_budget.cpp).
+inline constexpr double kTrailWidthPx = 1.0;
 inline constexpr double kTrailDotRadiusPx = 2.5;
 /// Trail colour alpha: the path reads under the bodies without hiding them.
 inline constexpr int kTrailAlpha = 170;

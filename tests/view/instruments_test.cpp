@@ -9,24 +9,32 @@
 #include "view/canvas_view.h"
 #include "view/graph_panel.h"
 #include "view/main_window.h"
+#include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
 #include "view/tools/measure_tools.h"
+#include "view/tools/probe_tool.h"
 #include "view/timeline.h"
 #include "view/view_constants.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QChartView>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
+#include <QRegularExpression>
+#include <QScrollArea>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QTest>
 
 #include <cmath>
+#include <set>
 
 using impetus::view::CanvasInstruments;
 using impetus::view::GraphPanel;
@@ -87,6 +95,25 @@ model::World fallingBallWorld()
     return world;
 }
 
+/// A ball falling freely from (0, 10) m between two fixed markers, at the origin and at (2, 12) m,
+/// which frame the view around the ball's first metres of fall.
+model::World fallingBallOverMarkerWorld()
+{
+    model::World world = fallingBallWorld();
+    world.bodies.push_back(test::makeBody("marker", model::Box{0.4, 0.4}, impetus::Vec2(0, 0), true));
+    world.bodies.push_back(test::makeBody("top", model::Box{0.4, 0.4}, impetus::Vec2(2, 12), true));
+    return world;
+}
+
+/// The number after "`name` = " in `text` ("y = 9.877 m" gives 9.877); NaN when there is none.
+double readoutValue(const QString& text, const QString& name)
+{
+    const QRegularExpression pattern(QStringLiteral("(?:^|[\\s,(])%1 = (-?[0-9]+\\.[0-9]+)")
+                                         .arg(QRegularExpression::escape(name)));
+    const QRegularExpressionMatch match = pattern.match(text);
+    return match.hasMatch() ? match.captured(1).toDouble() : std::nan("");
+}
+
 } // namespace
 
 class InstrumentsTest : public QObject {
@@ -101,6 +128,9 @@ private slots:
     void graphExportsAPictureAndFollowsTheTimeline();
     void rulerBetweenTwoClicksReadsTheDistance();
     void protractorReadsTheAngle();
+    void probeFollowsAFallingBall();
+    void velocityVectorsOfOneBodyFromThePane();
+    void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
     static bool showActive(MainWindow& window);
@@ -375,6 +405,215 @@ void InstrumentsTest::protractorReadsTheAngle()
     QVERIFY(std::abs(*protractor->angleDegrees() - expected) < 1e-9);
     QVERIFY(std::abs(expected - 126.87) < 1); // about 126.9° at the pixel clicked
     QCOMPARE(protractor->text(), QStringLiteral("%1°").arg(expected, 0, 'f', 1));
+}
+
+void InstrumentsTest::probeFollowsAFallingBall()
+{
+    MainWindow window;
+    window.setScene(fallingBallOverMarkerWorld(), QStringLiteral("falling"));
+    QVERIFY(showActive(window));
+    window.resize(1200, 650); // room for the label to the right of the ball
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    QTRY_VERIFY(viewport->width() > 600);
+    QTest::keyClick(viewport, Qt::Key_I);
+    QCOMPARE(canvas.toolKind(), impetus::view::ToolKind::Probe);
+    auto* probe = dynamic_cast<impetus::view::ProbeTool*>(canvas.tool());
+    QVERIFY(probe);
+    QVERIFY(probe->text().isEmpty());
+    QVERIFY(probe->labelRect().isNull());
+
+    // A click on the ball shows its readout to its right, level with it.
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0.02, 10.03)).toPoint());
+    QVERIFY(probe->body().has_value());
+    QCOMPARE(probe->body()->index, 0u);
+    QCOMPARE(probe->text().split(QLatin1Char('\n')).front(), QStringLiteral("ball"));
+    QCOMPARE(readoutValue(probe->text(), QStringLiteral("y")), 10.0);
+    QCOMPARE(readoutValue(probe->text(), QStringLiteral("vy")), 0.0);
+    const QRectF before = probe->labelRect();
+    const QPointF ballBefore = canvas.toView(QPointF(0, 10));
+    QVERIFY(before.left() > ballBefore.x());
+    QVERIFY(before.top() < ballBefore.y() && ballBefore.y() < before.bottom());
+    // The label is painted there: dark text on its paper, and nothing dark there before.
+    const QImage probed = viewport->grab().toImage();
+    QVERIFY(pixelsNear(probed, constants::kMeasureColor, nullptr, before.toRect()) > 0);
+
+    // Half a second of fall in batches, then one Step (→) as a user presses it.
+    for (int i = 0; i < 7; ++i)
+        window.runner().stepBy(17);
+    QTest::keyClick(viewport, Qt::Key_Right);
+    QTRY_COMPARE(window.runner().world().stepCount, std::int64_t{120});
+    const model::Body& ball = window.runner().world().bodies[0];
+    const double t = 0.5;
+    // The engine's state: v = −g·t exactly under constant gravity.
+    QVERIFY(std::abs(ball.state.velocity.y() + 9.81 * t) < 1e-9);
+    // The label reads the engine's state, to its last digit (three decimals).
+    const QString text = probe->text();
+    QVERIFY2(std::abs(readoutValue(text, QStringLiteral("y")) - ball.state.position.y()) <= 5e-4, qPrintable(text));
+    QVERIFY2(std::abs(readoutValue(text, QStringLiteral("vy")) - ball.state.velocity.y()) <= 5e-4, qPrintable(text));
+    QCOMPARE(readoutValue(text, QStringLiteral("vy")), -4.905);
+    QCOMPARE(readoutValue(text, QStringLiteral("vx")), 0.0);
+    const impetus::controller::BodyReadout readout = *probe->readout();
+    QVERIFY(std::abs(readout.kinetic - 0.5 * ball.mass * 4.905 * 4.905) < 1e-9);
+    QVERIFY(std::abs(readoutValue(text, QStringLiteral("K")) - readout.kinetic) <= 5e-4);
+    QVERIFY(std::abs(readoutValue(text, QStringLiteral("U")) - ball.mass * 9.81 * ball.state.position.y()) <= 5e-4);
+
+    // The label went down with the ball, by as many pixels as the ball fell.
+    const QRectF after = probe->labelRect();
+    const double fallPx = (10 - ball.state.position.y()) * canvas.pixelsPerMetre();
+    QVERIFY2(std::abs(after.top() - before.top() - fallPx) < 1.0,
+             qPrintable(QStringLiteral("%1 -> %2, %3 px").arg(before.top()).arg(after.top()).arg(fallPx)));
+    QVERIFY(pixelsNear(viewport->grab().toImage(), constants::kMeasureColor, nullptr, after.toRect()) > 0);
+
+    // Scrubbed back along the timeline, the label reads the state there.
+    window.timeline().seek(24);
+    QCOMPARE(readoutValue(probe->text(), QStringLiteral("vy")), -0.981);
+    QVERIFY(std::abs(probe->labelRect().top() - before.top() - 0.5 * 9.81 * 0.01 * canvas.pixelsPerMetre()) < 1.0);
+
+    // Esc removes it; so does a second click on the ball, or a click on empty space. A click on
+    // another body reads that one instead. None of it is an edit (the Step above is one).
+    const int edits = window.document().undoStack()->count();
+    QTest::keyClick(viewport, Qt::Key_Escape);
+    QVERIFY(probe->text().isEmpty());
+    QVERIFY(probe->labelRect().isNull());
+    const QPoint ballNow = canvas.toView(impetus::view::toQPointF(window.runner().world().bodies[0].state.position)).toPoint();
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, ballNow);
+    QVERIFY(probe->body().has_value());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, ballNow);
+    QVERIFY(!probe->body().has_value());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QCOMPARE(probe->text().split(QLatin1Char('\n')).front(), QStringLiteral("marker (fixed)"));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0.5, 5)).toPoint());
+    QVERIFY(probe->text().isEmpty());
+    QCOMPARE(window.document().undoStack()->count(), edits);
+}
+
+void InstrumentsTest::velocityVectorsOfOneBodyFromThePane()
+{
+    // Two balls moving alike, one above the other, no gravity.
+    model::World world = movingBallWorld();
+    model::Body upper = test::makeBody("upper", model::Circle{0.1}, impetus::Vec2(0, 1.5));
+    upper.state.velocity = impetus::Vec2(2, 0);
+    world.bodies.push_back(upper);
+    MainWindow window;
+    window.setScene(world, QStringLiteral("two balls"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    const double arrowPx = 2 * constants::kDefaultVelocityScale * canvas.pixelsPerMetre();
+    const auto around = [&](const QPointF& centre) {
+        const QPoint c = canvas.toView(centre).toPoint();
+        const int reach = static_cast<int>(1.5 * arrowPx);
+        return QRect(c - QPoint(reach / 3, reach / 3), QSize(reach, reach / 3 * 2));
+    };
+    QVERIFY(!around(QPointF(0, 0)).intersects(around(QPointF(0, 1.5))));
+
+    // Click the lower ball with the select tool; the pane shows it, with no arrows ticked.
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QCOMPARE(window.document().selection().bodies, std::vector<int>{0});
+    auto* velocity = window.propertyPane()->findChild<QCheckBox*>(QStringLiteral("bodyVelocityVectors"));
+    QVERIFY(velocity);
+    QVERIFY(velocity->isVisible());
+    QVERIFY(!velocity->isChecked());
+    // Tick its velocity box, on the box itself.
+    // The group is at the bottom of the body's attributes: scroll down to it, as a user does.
+    auto* scroll = window.propertyPane()->findChild<QScrollArea*>();
+    QVERIFY(scroll);
+    QTRY_VERIFY(velocity->height() > 0); // laid out once the event loop has run
+    scroll->ensureWidgetVisible(velocity);
+    QTRY_VERIFY(!velocity->visibleRegion().isEmpty());
+    const int half = velocity->height() / 2;
+    QTest::mouseClick(velocity, Qt::LeftButton, Qt::NoModifier, QPoint(half, half));
+    QVERIFY(velocity->isChecked());
+    QVERIFY(canvas.instruments().showsBodyVector("ball", VectorKind::Velocity));
+    QVERIFY(!canvas.instruments().showsVector(VectorKind::Velocity)); // the View menu's stays off
+
+    // An arrow on that ball only, and the legend gives its scale.
+    QImage image = canvas.viewport()->grab().toImage();
+    QVERIFY2(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 0))) > arrowPx / 2,
+             qPrintable(QStringLiteral("%1 px").arg(arrowPx)));
+    QCOMPARE(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 1.5))), 0);
+    QCOMPARE(canvas.instruments().legendLines(), QStringList{QStringLiteral("velocity: 1 m/s = 0.25 m")});
+    // The arrow moves with the ball.
+    window.runner().stepBy(24);
+    image = canvas.viewport()->grab().toImage();
+    QVERIFY(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 0))) > arrowPx / 2);
+    QCOMPARE(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 1.5))), 0);
+
+    // The other ball's box is not ticked; back on the first, it is.
+    window.document().setSelection(impetus::view::Selection{{2}, {}, {}});
+    QVERIFY(!velocity->isChecked());
+    window.document().setSelection(impetus::view::Selection{{0}, {}, {}});
+    QVERIFY(velocity->isChecked());
+    // A view setting, not an edit.
+    QCOMPARE(window.document().undoStack()->count(), 0);
+
+    // Cleared, the arrow goes.
+    QTest::mouseClick(velocity, Qt::LeftButton, Qt::NoModifier, QPoint(half, half));
+    QVERIFY(!canvas.instruments().showsBodyVector("ball", VectorKind::Velocity));
+    QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0);
+}
+
+void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()
+{
+    using impetus::view::ToolKind;
+    MainWindow window;
+    QVERIFY(showActive(window));
+    // A drawing, not an empty or missing file: some opaque pixels in a 24 px rendering.
+    const auto drawn = [](const QIcon& icon) {
+        if (icon.isNull())
+            return QImage();
+        const QImage image = icon.pixmap(QSize(24, 24)).toImage();
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                if (qAlpha(image.pixel(x, y)) > 128)
+                    return image;
+            }
+        }
+        return QImage();
+    };
+    std::set<QByteArray> drawings;
+    const auto distinct = [&](const QImage& image) {
+        const QByteArray bytes(reinterpret_cast<const char*>(image.constBits()), image.sizeInBytes());
+        return drawings.insert(bytes).second;
+    };
+    auto* toolBar = window.findChild<QToolBar*>(QStringLiteral("drawingTools"));
+    QVERIFY(toolBar);
+    QCOMPARE(toolBar->toolButtonStyle(), Qt::ToolButtonIconOnly);
+    const ToolKind kinds[] = {ToolKind::Select, ToolKind::Rotate, ToolKind::Polygon, ToolKind::Box,
+                              ToolKind::Circle, ToolKind::Ellipse, ToolKind::Spring, ToolKind::Pin,
+                              ToolKind::Rod, ToolKind::Ruler, ToolKind::Protractor, ToolKind::Probe};
+    for (const ToolKind kind : kinds) {
+        QAction* action = window.toolAction(kind);
+        const QImage image = drawn(action->icon());
+        QVERIFY2(!image.isNull(), qPrintable(action->text()));
+        QVERIFY2(distinct(image), qPrintable(action->text()));
+        const QString key = action->shortcut().toString(QKeySequence::NativeText);
+        QVERIFY(!key.isEmpty());
+        QVERIFY2(action->toolTip().contains(QStringLiteral("(%1)").arg(key)), qPrintable(action->toolTip()));
+        // The tool bar's button shows the icon alone, and answers to the shortcut.
+        auto* button = qobject_cast<QToolButton*>(toolBar->widgetForAction(action));
+        QVERIFY(button);
+        QVERIFY(!button->icon().isNull());
+        QCOMPARE(button->toolButtonStyle(), Qt::ToolButtonIconOnly);
+        QTest::keyClick(window.canvas().viewport(), action->shortcut()[0].key());
+        QCOMPARE(window.canvas().toolKind(), kind);
+    }
+
+    // The run controls: Play, Step Back, Step and Reset, and Pause while running.
+    const std::pair<QAction*, QString> controls[] = {{window.playAction(), QStringLiteral("(Space)")},
+                                                     {window.stepBackAction(), QStringLiteral("(←)")},
+                                                     {window.stepAction(), QStringLiteral("(→)")},
+                                                     {window.resetAction(), QStringLiteral("(R)")}};
+    for (const auto& [action, key] : controls) {
+        QVERIFY2(!drawn(action->icon()).isNull(), qPrintable(action->text()));
+        QVERIFY2(distinct(drawn(action->icon())), qPrintable(action->text()));
+        QVERIFY2(action->toolTip().contains(key), qPrintable(action->toolTip()));
+    }
+    window.playAction()->trigger();
+    QCOMPARE(window.playAction()->text(), QStringLiteral("Pause"));
+    QVERIFY(distinct(drawn(window.playAction()->icon())));
+    QVERIFY(window.playAction()->toolTip().contains(QStringLiteral("(Space)")));
+    window.playAction()->trigger();
 }
 
 QTEST_MAIN(InstrumentsTest)

@@ -686,9 +686,9 @@ void PropertyPaneTest::tabReachesEveryField_data()
     QTest::addColumn<Selection>("selection");
     QTest::addColumn<int>("fields");
     // Name, shape, vertex table and its two buttons, position ×2, angle, velocity ×2, angular
-    // velocity, mass mode, density, mass, inertia, restitution, friction, fixed, colour, soft, and
-    // the three soft fields.
-    QTest::newRow("soft polygon") << bodySelection(2) << 23;
+    // velocity, mass mode, density, mass, inertia, restitution, friction, fixed, colour, soft, the
+    // three soft fields, and the five "Show vectors" boxes.
+    QTest::newRow("soft polygon") << bodySelection(2) << 28;
     QTest::newRow("world") << Selection{} << 5;
     QTest::newRow("spring") << Selection{{}, {0}, {}} << 9;
     QTest::newRow("rod") << Selection{{}, {}, {0}} << 8;
@@ -710,7 +710,8 @@ void PropertyPaneTest::tabReachesEveryField()
     QCOMPARE(visited.size(), expectedCount);
     if (selection != bodySelection(2))
         return;
-    // Top to bottom: the name, the vertex table, the position, ..., soft damping last.
+    // Top to bottom: the name, the vertex table, the position, ..., soft damping, and the vector
+    // boxes last, row by row.
     const auto at = [&visited, &pane](const char* objectName) {
         return std::find(visited.begin(), visited.end(), pane.findChild<QWidget*>(objectName)) - visited.begin();
     };
@@ -723,7 +724,9 @@ void PropertyPaneTest::tabReachesEveryField()
     QVERIFY(at("restitution") < at("friction"));
     QVERIFY(at("friction") < at("fixed"));
     QVERIFY(at("soft") < at("softDensity"));
-    QCOMPARE(at("softDamping"), static_cast<std::ptrdiff_t>(visited.size()) - 1);
+    QVERIFY(at("softDamping") < at("bodyVelocityVectors"));
+    QVERIFY(at("bodyVelocityVectors") < at("bodyAccelerationVectors"));
+    QCOMPARE(at("bodyMomentumVectors"), static_cast<std::ptrdiff_t>(visited.size()) - 1);
 }
 
 void PropertyPaneTest::everyFieldHasAnAccessibleName()

@@ -27,14 +27,9 @@ constexpr double kLabelGapPx = 4;
 /// Draws `text` on a light box centred at the pixel point `at`.
 void drawLabel(QPainter& painter, const QPointF& at, const QString& text)
 {
-    const QFontMetricsF metrics(painter.font());
-    const double pad = constants::kLegendPaddingPx;
-    QRectF box(0, 0, metrics.horizontalAdvance(text) + 2 * pad, metrics.height() + pad);
+    QRectF box(QPointF(0, 0), measureLabelSize(painter.font(), text));
     box.moveCenter(at);
-    painter.setPen(QPen(constants::kMeasureColor, 1));
-    painter.setBrush(kLabelFill);
-    painter.drawRect(box);
-    painter.drawText(box, Qt::AlignCenter, text);
+    drawMeasureLabel(painter, box, text, true);
 }
 
 /// A pen for the measuring lines: dark, thin and the same on screen at every zoom.
@@ -46,6 +41,25 @@ QPen measurePen()
 }
 
 } // namespace
+
+QSizeF measureLabelSize(const QFont& font, const QString& text)
+{
+    const QFontMetricsF metrics(font);
+    const double pad = constants::kLegendPaddingPx;
+    // Unbounded width: each line as long as it is.
+    const QRectF bounds = metrics.boundingRect(QRectF(0, 0, 0, 0), Qt::AlignLeft | Qt::TextDontClip, text);
+    return QSizeF(bounds.width() + 2 * pad, bounds.height() + pad);
+}
+
+void drawMeasureLabel(QPainter& painter, const QRectF& box, const QString& text, bool centred)
+{
+    painter.setPen(QPen(constants::kMeasureColor, 1));
+    painter.setBrush(kLabelFill);
+    painter.drawRect(box);
+    const double pad = constants::kLegendPaddingPx;
+    const QRectF inside = centred ? box : box.adjusted(pad, 0, -pad, 0);
+    painter.drawText(inside, (centred ? Qt::AlignHCenter : Qt::AlignLeft) | Qt::AlignVCenter, text);
+}
 
 QPointF measurePoint(const CanvasView& canvas, const QPointF& scenePos)
 {

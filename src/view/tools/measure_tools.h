@@ -6,12 +6,24 @@
 #include "view/tools/tool.h"
 
 #include <QPointF>
+#include <QRectF>
+#include <QSizeF>
 #include <QString>
 
 #include <optional>
 #include <vector>
 
+class QFont;
+
 namespace impetus::view {
+
+/// The size, px, of a measuring label of `text` (one line or several) written in `font`, with its
+/// padding: what drawMeasureLabel() needs for the whole text.
+QSizeF measureLabelSize(const QFont& font, const QString& text);
+
+/// Draws `text` on the measuring tools' light paper filling `box` (px, the painter untransformed),
+/// with a thin dark frame; the lines are centred when `centred`, else left-aligned.
+void drawMeasureLabel(QPainter& painter, const QRectF& box, const QString& text, bool centred);
 
 /// Where a measuring tool puts a point clicked at `scenePos`: the nearest body centre of mass or
 /// polygon or box corner within constants::kMeasureSnapPx on screen, else the point itself

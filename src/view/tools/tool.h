@@ -30,6 +30,7 @@ enum class ToolKind {
     Rod, ///< drag from a body to another body or to a world point
     Ruler, ///< click two points (or drag): the distance between them, m
     Protractor, ///< click a vertex and a point on each arm: the angle between them, degrees
+    Probe, ///< click a body: its live readout in a label that follows it
 };
 
 /// A mouse event as a tool sees it: where it happened on the canvas and in the scene.
