@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -478,8 +479,13 @@ int runCli(std::span<const std::string> args, std::ostream& out, std::ostream& e
             return commandValidate(args.subspan(1), out, err);
         err << "impetus-cli: unknown command '" << command << "'\n\n" << kUsage;
         return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // Reading a scene reports this itself (exit 2); here it struck while building or running
+        // the world. The stack is unwound, so the world's memory is free again for the message.
+        err << "impetus-cli: out of memory: the scene is too large to simulate with the memory available\n";
+        return kExitRuntimeFailure;
     } catch (const std::exception& e) {
-        // Nothing above should throw; if something does (out of memory), fail cleanly.
+        // Nothing above should throw; if something does, fail cleanly.
         err << "impetus-cli: " << e.what() << '\n';
         return kExitRuntimeFailure;
     }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 namespace {
@@ -45,6 +46,10 @@ std::string quoted(const std::string& arg)
     return q + "'";
 }
 
+/// How long a run that should end at once may take before it counts as hanging (see
+/// runWithDeadline): far above any real run here, far below "forever".
+constexpr const char* kHangDeadline = "60";
+
 std::string dataFile(const std::string& name) { return std::string(IMPETUS_CLI_DATA_DIR) + "/" + name; }
 
 class Cli : public ::testing::Test {
@@ -61,9 +66,19 @@ protected:
     fs::path tempPath(const std::string& name) const { return m_dir / name; }
 
     /// Runs impetus-cli with `args`, capturing stdout, stderr and the exit code.
-    CliResult run(const std::vector<std::string>& args) const
+    CliResult run(const std::vector<std::string>& args) const { return runCommand(quoted(IMPETUS_CLI_PATH), args); }
+
+    /// Like run(), but a run still going after kHangDeadline is killed (exit code 124): for input
+    /// that used to make the program read or wait forever, so that such a test fails, not hangs.
+    CliResult runWithDeadline(const std::vector<std::string>& args) const
     {
-        std::string command = quoted(IMPETUS_CLI_PATH);
+        return runCommand("timeout " + std::string(kHangDeadline) + " " + quoted(IMPETUS_CLI_PATH), args);
+    }
+
+    /// Runs `program` with `args`, capturing stdout, stderr and the exit code.
+    CliResult runCommand(const std::string& program, const std::vector<std::string>& args) const
+    {
+        std::string command = program;
         for (const std::string& arg : args) {
             command += ' ';
             command += quoted(arg);
@@ -396,3 +411,61 @@ TEST_F(Cli, CompareRigidPrintsTheDeviationOverTime)
 }
 
 } // namespace
+
+// ---- Issue 17, item 4 (F6/F7): unbounded reads ------------------------------------------------
+
+// A device never ends: `validate /dev/zero` used to read until memory ran out. Now what is not a
+// regular file is refused before it is opened, and quickly.
+TEST_F(Cli, ADeviceIsRefusedNotReadForever)
+{
+    for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+        const CliResult r = runWithDeadline({"validate", device});
+        EXPECT_EQ(r.exitCode, 2) << device;
+        EXPECT_NE(r.err.find("(file): cannot open '" + std::string(device) + "': it is a device, not a regular file"),
+                  std::string::npos)
+            << r.err;
+    }
+}
+
+// Opening a pipe blocks until someone writes to it; it used to hang `validate` for good.
+TEST_F(Cli, APipeIsRefusedWithoutWaitingForAWriter)
+{
+    const fs::path fifo = tempPath("scene.json");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const CliResult r = runWithDeadline({"run", fifo.string(), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("it is a pipe (FIFO), not a regular file"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AFolderIsRefused)
+{
+    const CliResult r = runWithDeadline({"validate", tempPath("").string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("it is a directory"), std::string::npos) << r.err;
+}
+
+// A file over the cap is refused from its size alone (a sparse file costs no disk here).
+TEST_F(Cli, AFileLargerThanTheCapIsRefusedWithTheCap)
+{
+    const fs::path huge = tempPath("huge.json");
+    std::ofstream(huge) << "{";
+    fs::resize_file(huge, std::uintmax_t{64} * 1024 * 1024 + 1);
+    const CliResult r = runWithDeadline({"validate", huge.string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("larger than the 64 MiB (67108864 bytes) a scene file may have"), std::string::npos) << r.err;
+}
+
+// Ten million nested arrays used to build a ten-million-level document (1.8 GB); now the parser
+// stops at the nesting limit.
+TEST_F(Cli, DeepNestingIsRefusedAtTheLimit)
+{
+    const fs::path deep = tempPath("deep.json");
+    constexpr std::size_t kDepth = 10'000'000;
+    {
+        std::ofstream out(deep, std::ios::binary);
+        out << std::string(kDepth, '[') << std::string(kDepth, ']');
+    }
+    const CliResult r = runWithDeadline({"validate", deep.string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("nested deeper than 64 levels"), std::string::npos) << r.err;
+}
