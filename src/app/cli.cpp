@@ -259,6 +259,100 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
     return summary;
 }
 
+/// What makes one of the summary's energies or momenta non-finite: `what` completes
+/// "… at t = T s (step k)" after the subject, e.g. "body 'b' has a non-finite kinetic energy".
+struct NonFiniteDiagnostic {
+    std::string subject; ///< "body 'b' has a non-finite kinetic energy"
+    std::string reason; ///< "½mv² + ½Iω² overflows a double (mass 1e+200 kg, speed 1e+200 m/s)"
+};
+
+/// One of the summary's sums over the dynamic bodies, with each body's share of it.
+struct DiagnosticSum {
+    std::string_view name; ///< "kinetic energy"
+    double total;
+    std::string_view formula; ///< the body's share, for the message
+    double (*share)(const model::Body&, const model::WorldSettings&);
+};
+
+double kineticShare(const model::Body& b, const model::WorldSettings&)
+{
+    const model::BodyState& s = b.state;
+    return 0.5 * b.mass * s.velocity.squaredNorm() + 0.5 * b.inertia * s.angularVelocity * s.angularVelocity;
+}
+double potentialShare(const model::Body& b, const model::WorldSettings& w) { return -b.mass * w.gravity.dot(b.state.position); }
+double momentumXShare(const model::Body& b, const model::WorldSettings&) { return b.mass * b.state.velocity.x(); }
+double momentumYShare(const model::Body& b, const model::WorldSettings&) { return b.mass * b.state.velocity.y(); }
+double angularShare(const model::Body& b, const model::WorldSettings&)
+{
+    return b.inertia * b.state.angularVelocity + b.mass * cross(b.state.position, b.state.velocity);
+}
+
+/// The first of the summary's energies and momenta that is not a finite number, and which body
+/// makes it so; nullopt when they are all finite. A finite state can still overflow them (a mass
+/// of 1e200 kg at 1e200 m/s): the summary would then hold null, so the run fails instead.
+std::optional<NonFiniteDiagnostic> findNonFiniteDiagnostic(const model::World& world)
+{
+    const controller::Energy energy = controller::computeEnergy(world);
+    const Vec2 momentum = controller::linearMomentum(world);
+    const std::array<DiagnosticSum, 5> sums = {{
+        {"kinetic energy", energy.kinetic, "½mv² + ½Iω²", kineticShare},
+        {"potential energy", energy.potential, "−m·g·x", potentialShare},
+        {"momentum (x)", momentum.x(), "m·vx", momentumXShare},
+        {"momentum (y)", momentum.y(), "m·vy", momentumYShare},
+        {"angular momentum", controller::angularMomentum(world), "I·ω + m·(x × v)", angularShare},
+    }};
+    for (const DiagnosticSum& sum : sums) {
+        if (std::isfinite(sum.total))
+            continue;
+        // The body whose own share overflows, or else the largest share of a sum that overflows.
+        const model::Body* largest = nullptr;
+        double largestShare = 0;
+        for (const model::Body& body : world.bodies) {
+            if (body.fixed)
+                continue;
+            const double share = sum.share(body, world.settings);
+            if (!std::isfinite(share)) {
+                return NonFiniteDiagnostic{
+                    "body '" + body.name + "' has a non-finite " + std::string(sum.name),
+                    std::string(sum.formula) + " overflows a double (mass " + formatNumber(body.mass) +
+                        " kg, speed " + formatNumber(std::hypot(body.state.velocity.x(), body.state.velocity.y())) +
+                        " m/s, position (" + formatNumber(body.state.position.x()) + ", " +
+                        formatNumber(body.state.position.y()) + ") m)"};
+            }
+            if (!largest || std::abs(share) > std::abs(largestShare)) {
+                largest = &body;
+                largestShare = share;
+            }
+        }
+        if (largest) {
+            return NonFiniteDiagnostic{"the total " + std::string(sum.name) + " is not finite",
+                                       "the bodies' shares add up past the largest double; the largest share is body '" +
+                                           largest->name + "''s (" + formatNumber(largestShare) + ")"};
+        }
+        return NonFiniteDiagnostic{"the total " + std::string(sum.name) + " is not finite",
+                                   "a soft body's grid overflows a double"};
+    }
+    if (!std::isfinite(energy.elastic))
+        return NonFiniteDiagnostic{"the elastic energy is not finite",
+                                   "a spring's ½k(L − L₀)² overflows a double"};
+    if (!std::isfinite(energy.total()))
+        return NonFiniteDiagnostic{"the total energy is not finite",
+                                   "kinetic, potential and elastic energy add up past the largest double"};
+    return std::nullopt;
+}
+
+/// Checks the summary's diagnostics after `step` steps; reports on `err` and returns false when
+/// one is not finite.
+bool diagnosticsFinite(const model::World& world, std::int64_t step, double dt, std::ostream& err)
+{
+    const std::optional<NonFiniteDiagnostic> bad = findNonFiniteDiagnostic(world);
+    if (!bad)
+        return true;
+    err << "impetus-cli run: " << bad->subject << " at t = " << formatNumber(static_cast<double>(step) * dt)
+        << " s (step " << step << "): " << bad->reason << '\n';
+    return false;
+}
+
 /// Prints "step k of n (p%)" on one rewritten terminal line, at most every kProgressInterval.
 class ProgressLine {
 public:
@@ -408,6 +502,10 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
     controller::prepareSoftBodies(world);
     reportSoftBodies(world, err);
 
+    // A state that starts finite can still overflow the summary's sums; failing now saves the run.
+    if (!diagnosticsFinite(world, 0, dt, err))
+        return kExitRuntimeFailure;
+
     controller::Simulation simulation;
     {
         ProgressLine progress(err, errIsTerminal, totalSteps);
@@ -437,6 +535,10 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         }
     }
 
+    // The summary must never write null: a non-finite energy or momentum is a failure at run
+    // time, like a non-finite state.
+    if (!diagnosticsFinite(world, totalSteps, dt, err))
+        return kExitRuntimeFailure;
     const double simulatedTime = static_cast<double>(totalSteps) * dt;
     const nlohmann::ordered_json summary = makeSummary(world, simulatedTime, totalSteps);
     if (options.summaryPath && *options.summaryPath == "-") {

@@ -469,3 +469,38 @@ TEST_F(Cli, DeepNestingIsRefusedAtTheLimit)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("nested deeper than 64 levels"), std::string::npos) << r.err;
 }
+
+// ---- Issue 17, item 3 (F3): overflow written as null ------------------------------------------
+
+// A finite state whose energy and momentum overflow (1e200 kg at 1e200 m/s) used to give
+// "kinetic": null with exit 0. It is a failure at run time, named like a non-finite state.
+TEST_F(Cli, OverflowingMomentumIsARuntimeFailureNotNull)
+{
+    const CliResult r = run({"run", dataFile("overflow_momentum.json"), "--steps", "2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'b' has a non-finite kinetic energy at t = 0 s (step 0)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("mass 1e+200 kg, speed 1e+200 m/s"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, OverflowingEnergyIsARuntimeFailureNotNull)
+{
+    const CliResult r = run({"run", dataFile("overflow_energy.json"), "--steps", "2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'b' has a non-finite kinetic energy"), std::string::npos) << r.err;
+}
+
+// A state that is finite when the run starts and overflows the energy during it: the run fails
+// at its end, naming the step, instead of writing null.
+TEST_F(Cli, EnergyThatOverflowsDuringTheRunFailsAtTheEnd)
+{
+    const fs::path scene = tempPath("falls.json");
+    std::ofstream(scene) << R"({"format":"impetus-scene","version":1,"world":{"gravity":[0,-1e300]},
+        "bodies":[{"name":"rock","shape":{"type":"circle","radius":0.5},"position":[0,0]}]})";
+    const CliResult r = run({"run", scene.string(), "--steps", "3", "--dt", "0.01", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'rock' has a non-finite kinetic energy at t = 0.03 s (step 3)"), std::string::npos)
+        << r.err;
+}
