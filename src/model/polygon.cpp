@@ -442,25 +442,26 @@ std::vector<std::vector<std::size_t>> mergeConvex(
     return out;
 }
 
-} // namespace
+/// The vertices multiplied by the power of two that brings the largest coordinate into [1, 2).
+std::vector<Vec2> scaledToUnitSize(std::span<const Vec2> vertices)
+{
+    Scalar largest = 0;
+    for (const Vec2& v : vertices)
+        largest = std::max({largest, std::abs(v.x()), std::abs(v.y())});
+    std::vector<Vec2> out(vertices.begin(), vertices.end());
+    if (largest == 0)
+        return out;
+    const int exponent = std::ilogb(largest);
+    for (Vec2& v : out)
+        v = Vec2(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent));
+    return out;
+}
 
-std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
+/// validatePolygon's geometric tests, on finite vertices (at least three).
+std::vector<PolygonIssue> checkSimple(std::span<const Vec2> vertices)
 {
     std::vector<PolygonIssue> issues;
     const std::size_t n = vertices.size();
-    if (n < kMinVertices) {
-        issues.push_back({PolygonIssueKind::TooFewVertices,
-            "polygon needs at least " + std::to_string(kMinVertices) + " vertices (got " + std::to_string(n) + ")"});
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!isFinite(vertices[i]))
-            issues.push_back(
-                {PolygonIssueKind::NonFiniteVertex, "vertex " + std::to_string(i) + " is not a finite number"});
-    }
-    // Every later test measures distances and areas, meaningless with NaNs or too few points.
-    if (!issues.empty())
-        return issues;
-
     const Scalar tolerance = pointTolerance(vertices);
     std::vector<bool> repeatsEarlier(n, false);
     for (std::size_t i = 0; i < n; ++i) {
@@ -514,6 +515,32 @@ std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
         }
     }
     return issues;
+}
+
+} // namespace
+
+std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
+{
+    std::vector<PolygonIssue> issues;
+    const std::size_t n = vertices.size();
+    if (n < kMinVertices) {
+        issues.push_back({PolygonIssueKind::TooFewVertices,
+            "polygon needs at least " + std::to_string(kMinVertices) + " vertices (got " + std::to_string(n) + ")"});
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!isFinite(vertices[i]))
+            issues.push_back(
+                {PolygonIssueKind::NonFiniteVertex, "vertex " + std::to_string(i) + " is not a finite number"});
+    }
+    // Every later test measures distances and areas, meaningless with NaNs or too few points.
+    if (!issues.empty())
+        return issues;
+    // The tests below square lengths: for a polygon 1e160 m across they overflow (a triangle was
+    // called collinear), for one 1e-200 m across they underflow (its vertices were "the same
+    // point"). Judging a copy scaled by a power of two to about unit size gives the same answers
+    // the tests give at a classroom scale, since such a scaling is exact in binary floating point.
+    const std::vector<Vec2> unitScaled = scaledToUnitSize(vertices);
+    return checkSimple(unitScaled);
 }
 
 Scalar signedArea(std::span<const Vec2> vertices)

@@ -454,6 +454,9 @@ private:
 // ------------------------------------------------------------------------------------------------
 // Validation: reads the document into a World, reporting every problem it meets.
 
+/// |v|, m, without overflow or underflow in the squares (a vector of 1e160 m has a finite length).
+Scalar length(const Vec2& v) { return std::hypot(v.x(), v.y()); }
+
 /// What a number must satisfy besides being finite.
 enum class Bound {
     Any,
@@ -999,7 +1002,7 @@ private:
             spring.bodyB = b.id;
             if (!restLengthGiven && posesKnown(a, b)) {
                 const Vec2 endA = world.body(spring.bodyA).worldPoint(spring.anchorA);
-                spring.restLength = (worldPointOf(world, spring.bodyB, spring.anchorB) - endA).norm();
+                spring.restLength = length(Vec2(worldPointOf(world, spring.bodyB, spring.anchorB) - endA));
             }
             world.springs.push_back(spring);
         }
@@ -1079,11 +1082,13 @@ private:
         if (posesKnown(a, b)) {
             const Vec2 endA = world.body(joint.bodyA).worldPoint(joint.anchorA);
             const Vec2 endB = worldPointOf(world, joint.bodyB, joint.anchorB);
-            joint.length = (endB - endA).norm();
+            // hypot, not norm(): the squares of a length of 1e160 m overflow, and an infinite
+            // length once made a rod that long "zero length" (infinity is not above infinity).
+            joint.length = length(Vec2(endB - endA));
             // A rod keeps a direction as well as a length; with both ends on one point it has
             // none. "One point" is judged relative to how far from the origin the ends are, since
             // the rotation that places the anchors rounds at that scale.
-            const Scalar scale = std::max({Scalar(1), endA.norm(), endB.norm()});
+            const Scalar scale = std::max({Scalar(1), length(endA), length(endB)});
             if (!(joint.length > constants::kRelativePointTolerance * scale)) {
                 report(path, "rod has zero length: its two anchors are at the same point at load time");
                 return;
