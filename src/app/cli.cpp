@@ -6,6 +6,7 @@
 #include "controller/soft/soft_comparison.h"
 #include "controller/soft/soft_stability.h"
 #include "model/scene_io.h"
+#include "model/scene_warnings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -430,8 +431,12 @@ int commandValidate(std::span<const std::string> args, std::ostream& out, std::o
         err << "impetus-cli validate: expected exactly one scene file\n\n" << kUsage;
         return kExitBadInput;
     }
-    if (!loadScene(args[0], err))
+    const std::optional<model::World> world = loadScene(args[0], err);
+    if (!world)
         return kExitBadInput;
+    // Legal but outside the tested ranges: still "ok" and exit 0, with the reason on stderr.
+    for (const model::SceneProblem& warning : model::sceneWarnings(*world))
+        err << args[0] << ": warning: " << warning.toString() << '\n';
     out << "ok\n";
     return kExitOk;
 }
@@ -455,6 +460,9 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
     if (options.integrator)
         world.settings.integrator = *options.integrator;
     const double dt = world.settings.timeStep;
+    // After the flags, which may be what takes the settings out of range (--dt 5).
+    for (const model::SceneProblem& warning : model::sceneWarnings(world))
+        err << "impetus-cli run: warning: " << warning.toString() << '\n';
 
     // --time is rounded to the nearest whole number of fixed steps; the summary reports the time
     // actually simulated, steps × dt.

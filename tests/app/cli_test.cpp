@@ -504,3 +504,45 @@ TEST_F(Cli, EnergyThatOverflowsDuringTheRunFailsAtTheEnd)
     EXPECT_NE(r.err.find("body 'rock' has a non-finite kinetic energy at t = 0.03 s (step 3)"), std::string::npos)
         << r.err;
 }
+
+// ---- Issue 17, item 6 (F8/F9, timeStep 1.0): settings outside the tested ranges -------------
+
+// bad-cases/F8: g = 1e6 m/s² sent a stack to 1e14 m with exit 0 and not a word. The scene is
+// legal, so it still runs, with the reason on stderr.
+TEST_F(Cli, StrongGravityRunsWithAWarningNamingTheLimit)
+{
+    const CliResult r = run({"run", dataFile("stack_gravity_1e6.json"), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.err.find("impetus-cli run: warning: world.gravity: |g| = 1e+06 m/s² moves a body 17.4 m in one "
+                         "solver step of 4.17 ms"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("keep |g| at most 115 m/s² at this step"), std::string::npos) << r.err;
+}
+
+// bad-cases/F9: a 1e6 kg box on a 1e-6 kg box fell through it.
+TEST_F(Cli, ValidateWarnsAboutTouchingBodiesOfVeryDifferentMass)
+{
+    const CliResult r = run({"validate", dataFile("mass_ratio_1e12.json")});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "ok\n");
+    EXPECT_NE(r.err.find("warning: bodies[1]: 'light' (1e-06 kg) touches 'heavy' (1e+06 kg), a mass ratio of 1e+12"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("warning: bodies[4]: 'light2'"), std::string::npos) << r.err;
+}
+
+// A step longer than the substeps can split (1 s); the warning comes from the flag as well.
+TEST_F(Cli, AStepLongerThanOneSecondIsWarned)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--dt", "5"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.err.find("warning: world.timeStep: a step of 5 s is longer than 1 s"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, TheDefaultSettingsGiveNoWarning)
+{
+    const CliResult r = run({"run", dataFile("collide.json"), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
