@@ -11,23 +11,36 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <new>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 namespace impetus::app {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 /// Simulated time run when neither --time nor --steps is given, s.
 constexpr double kDefaultRunTime = 10.0;
+
+/// The most steps one run takes, whether given by --steps or by --time. A billion steps is 48
+/// days of simulated time at the default step and hours of wall time even for a one-body scene;
+/// more is a typo, not a lesson (docs/cli.md).
+constexpr std::int64_t kMaxRunSteps = 1'000'000'000;
 
 /// Wall time between two updates of the progress line, s.
 constexpr double kProgressInterval = 0.5;
@@ -36,8 +49,8 @@ constexpr std::string_view kUsage =
     "usage:\n"
     "  impetus-cli run SCENE.json [--time SECONDS | --steps N] [--dt SECONDS]\n"
     "                             [--integrator euler|semi-implicit-euler|rk4]\n"
-    "                             [--csv FILE] [--sample-every N] [--summary FILE|-]\n"
-    "                             [--collision-log FILE] [--compare-rigid BODY]\n"
+    "                             [--csv FILE|-] [--sample-every N] [--summary FILE|-]\n"
+    "                             [--collision-log FILE|-] [--compare-rigid BODY]\n"
     "  impetus-cli validate SCENE.json\n"
     "\n"
     "run       steps the scene headless with its fixed time step (default: 10 s of simulated time)\n"
@@ -45,6 +58,9 @@ constexpr std::string_view kUsage =
     "--compare-rigid BODY  also runs the scene with BODY rigid and soft and prints, as CSV on\n"
     "          stdout, how far apart its two centre-of-mass paths are over time\n"
     "exit codes: 0 success, 1 failure at run time, 2 bad usage or a bad scene\n";
+
+/// The output name that means stdout, for --csv, --summary and --collision-log.
+constexpr std::string_view kStdoutPath = "-";
 
 /// What `run` was asked to do.
 struct RunOptions {
@@ -86,16 +102,80 @@ double parsePositiveSeconds(std::string_view flag, const std::string& text, bool
     return value;
 }
 
-std::int64_t parseCount(std::string_view flag, const std::string& text, std::int64_t minimum)
+std::int64_t parseCount(std::string_view flag, const std::string& text, std::int64_t minimum, std::int64_t maximum)
 {
+    const auto tooLarge = [&] {
+        return UsageError{std::string(flag) + ": " + text + " is too large (at most " + std::to_string(maximum) + ")"};
+    };
     std::int64_t value = 0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc{} || ptr != end)
-        throw UsageError{std::string(flag) + ": expected a whole number, got '" + text + "'"};
+    if (ec == std::errc::result_out_of_range && ptr == end && text.front() != '-')
+        throw tooLarge();
+    if (ec != std::errc{} || ptr != end) {
+        // "1e20" is a whole number written as a double: say what is wrong with it, and take
+        // "1e3" as the 1000 it means.
+        double real = 0;
+        const auto [realEnd, realError] = std::from_chars(text.data(), end, real);
+        const bool whole = realError == std::errc{} && realEnd == end && std::isfinite(real) && std::floor(real) == real;
+        if (!whole)
+            throw UsageError{std::string(flag) + ": expected a whole number, got '" + text + "'"};
+        if (real > static_cast<double>(maximum))
+            throw tooLarge();
+        value = static_cast<std::int64_t>(real);
+    }
     if (value < minimum)
         throw UsageError{std::string(flag) + ": must be at least " + std::to_string(minimum) + ", got " + text};
+    if (value > maximum)
+        throw tooLarge();
     return value;
+}
+
+/// True when `path` names the file at `other` (through links, or the same name when neither
+/// exists yet).
+bool sameFile(const std::string& path, const std::string& other)
+{
+    std::error_code ec;
+    if (fs::equivalent(path, other, ec) && !ec)
+        return true;
+    const fs::path a = fs::weakly_canonical(path, ec);
+    if (ec)
+        return false;
+    const fs::path b = fs::weakly_canonical(other, ec);
+    return !ec && a == b;
+}
+
+/// Refuses outputs that would clash, before anything is read or written: two outputs on stdout
+/// ("-"), two on one file, or one on the scene file itself (writing the CSV there would destroy
+/// the scene being run).
+void checkOutputs(const RunOptions& options)
+{
+    std::vector<std::pair<std::string_view, const std::optional<std::string>*>> outputs = {
+        {"--csv", &options.csvPath}, {"--summary", &options.summaryPath}, {"--collision-log", &options.collisionLogPath}};
+    std::optional<std::string> onStdout;
+    if (options.compareRigid)
+        onStdout = "--compare-rigid";
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const auto& [flag, path] = outputs[i];
+        if (!*path)
+            continue;
+        if (**path == kStdoutPath) {
+            const std::string named = std::string(flag) + " -";
+            if (onStdout)
+                throw UsageError{*onStdout + " and " + named + " both write to stdout: give one of them a file"};
+            onStdout = named;
+            continue;
+        }
+        if (sameFile(**path, options.scenePath))
+            throw UsageError{std::string(flag) + ": '" + **path +
+                             "' is the scene file being run; writing there would overwrite it"};
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto& [otherFlag, otherPath] = outputs[j];
+            if (*otherPath && **otherPath != kStdoutPath && sameFile(**path, **otherPath))
+                throw UsageError{std::string(otherFlag) + " and " + std::string(flag) + " both write '" + **path +
+                                 "': give each its own file"};
+        }
+    }
 }
 
 /// Parses the arguments after `run`. Accepts both "--flag value" and "--flag=value".
@@ -103,6 +183,7 @@ RunOptions parseRunOptions(std::span<const std::string> args)
 {
     RunOptions options;
     bool haveScene = false;
+    std::set<std::string> seenFlags;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string arg = args[i];
         std::optional<std::string> inlineValue;
@@ -120,10 +201,12 @@ RunOptions parseRunOptions(std::span<const std::string> args)
             return args[++i];
         };
 
+        if (arg.rfind("--", 0) == 0 && !seenFlags.insert(arg).second)
+            throw UsageError{arg + ": given twice (give each option once)"};
         if (arg == "--time") {
             options.time = parsePositiveSeconds(arg, value(), true);
         } else if (arg == "--steps") {
-            options.steps = parseCount(arg, value(), 0);
+            options.steps = parseCount(arg, value(), 0, kMaxRunSteps);
         } else if (arg == "--dt") {
             options.dt = parsePositiveSeconds(arg, value(), false);
         } else if (arg == "--integrator") {
@@ -135,7 +218,7 @@ RunOptions parseRunOptions(std::span<const std::string> args)
         } else if (arg == "--csv") {
             options.csvPath = value();
         } else if (arg == "--sample-every") {
-            options.sampleEvery = parseCount(arg, value(), 1);
+            options.sampleEvery = parseCount(arg, value(), 1, std::numeric_limits<std::int64_t>::max());
         } else if (arg == "--summary") {
             options.summaryPath = value();
         } else if (arg == "--collision-log") {
@@ -155,8 +238,7 @@ RunOptions parseRunOptions(std::span<const std::string> args)
         throw UsageError{"run: no scene file given"};
     if (options.time && options.steps)
         throw UsageError{"--time and --steps cannot be used together"};
-    if (options.compareRigid && options.summaryPath == "-")
-        throw UsageError{"--compare-rigid and --summary - both write to stdout: give the summary a file"};
+    checkOutputs(options);
     return options;
 }
 
@@ -213,14 +295,51 @@ void writeCollisionLogRows(std::ostream& log, const model::World& world,
     }
 }
 
-/// Opens an output file for writing, reporting failure on `err`.
+/// Opens an output file for writing, reporting failure and its reason on `err`.
 bool openOutput(std::ofstream& file, const std::string& path, std::string_view what, std::ostream& err)
 {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+        err << "impetus-cli run: cannot write the " << what << " file '" << path << "': it is a directory\n";
+        return false;
+    }
+    errno = 0;
     file.open(path, std::ios::out | std::ios::trunc);
-    if (!file)
-        err << "impetus-cli run: cannot write the " << what << " file '" << path << "'\n";
+    if (!file) {
+        err << "impetus-cli run: cannot write the " << what << " file '" << path << "'";
+        if (errno != 0)
+            err << ": " << std::error_code(errno, std::generic_category()).message();
+        err << '\n';
+    }
     return static_cast<bool>(file);
 }
+
+/// Where one output goes: stdout for "-", else a file opened before the run.
+class Output {
+public:
+    /// Opens `path` (nothing when absent); false, with the reason on `err`, when it cannot be written.
+    bool open(const std::optional<std::string>& path, std::string_view what, std::ostream& out, std::ostream& err)
+    {
+        if (!path)
+            return true;
+        m_path = *path;
+        if (*path == kStdoutPath) {
+            m_stream = &out;
+            return true;
+        }
+        m_stream = &m_file;
+        return openOutput(m_file, *path, what, err);
+    }
+
+    bool isOpen() const { return m_stream != nullptr; }
+    std::ostream& stream() { return *m_stream; }
+    const std::string& path() const { return m_path; }
+
+private:
+    std::ofstream m_file;
+    std::ostream* m_stream = nullptr;
+    std::string m_path;
+};
 
 nlohmann::ordered_json vectorJson(const Vec2& v) { return nlohmann::ordered_json::array({v.x(), v.y()}); }
 
@@ -465,34 +584,36 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         err << "impetus-cli run: warning: " << warning.toString() << '\n';
 
     // --time is rounded to the nearest whole number of fixed steps; the summary reports the time
-    // actually simulated, steps × dt.
+    // actually simulated, steps × dt. It has the same limit as --steps.
     std::int64_t totalSteps = 0;
     if (options.steps) {
         totalSteps = *options.steps;
     } else {
         const double requested = options.time.value_or(kDefaultRunTime);
         const double count = std::round(requested / dt);
-        if (!(count < 9.0e15)) {
-            err << "impetus-cli run: " << formatNumber(requested) << " s at dt = " << formatNumber(dt)
-                << " s is too many steps\n";
+        if (!(count <= static_cast<double>(kMaxRunSteps))) {
+            err << "impetus-cli run: --time: " << formatNumber(requested) << " s at dt = " << formatNumber(dt)
+                << " s is " << formatNumber(count) << " steps, too large (at most " << kMaxRunSteps << " steps)\n";
             return kExitBadInput;
         }
         totalSteps = static_cast<std::int64_t>(count);
     }
 
-    std::ofstream csv;
-    if (options.csvPath) {
-        if (!openOutput(csv, *options.csvPath, "CSV", err))
-            return kExitRuntimeFailure;
-        csv << "time,body,x,y,angle,vx,vy,angularVelocity,colliding\n";
-        writeCsvRows(csv, world, 0.0);
+    // Every output is opened before the first step, so that one that cannot be written fails at
+    // once rather than after a long run.
+    Output csv;
+    Output collisionLog;
+    Output summaryOutput;
+    if (!csv.open(options.csvPath, "CSV", out, err) ||
+        !collisionLog.open(options.collisionLogPath, "collision log", out, err) ||
+        !summaryOutput.open(options.summaryPath, "summary", out, err))
+        return kExitRuntimeFailure;
+    if (csv.isOpen()) {
+        csv.stream() << "time,body,x,y,angle,vx,vy,angularVelocity,colliding\n";
+        writeCsvRows(csv.stream(), world, 0.0);
     }
-    std::ofstream collisionLog;
-    if (options.collisionLogPath) {
-        if (!openOutput(collisionLog, *options.collisionLogPath, "collision log", err))
-            return kExitRuntimeFailure;
-        collisionLog << "time,bodyA,bodyB,x,y,nx,ny,normalImpulse,normalSpeedBefore,normalSpeedAfter\n";
-    }
+    if (collisionLog.isOpen())
+        collisionLog.stream() << "time,bodyA,bodyB,x,y,nx,ny,normalImpulse,normalSpeedBefore,normalSpeedAfter\n";
 
     std::optional<model::BodyId> compared;
     if (options.compareRigid) {
@@ -525,20 +646,20 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
                     << formatNumber(time) << " s (step " << step << ")\n";
                 return kExitRuntimeFailure;
             }
-            if (csv.is_open() && step % options.sampleEvery == 0)
-                writeCsvRows(csv, world, time);
-            if (collisionLog.is_open())
-                writeCollisionLogRows(collisionLog, world, simulation.events(), time);
+            if (csv.isOpen() && step % options.sampleEvery == 0)
+                writeCsvRows(csv.stream(), world, time);
+            if (collisionLog.isOpen())
+                writeCollisionLogRows(collisionLog.stream(), world, simulation.events(), time);
             progress.update(step);
         }
     }
 
-    for (auto [file, path] : {std::pair{&csv, &options.csvPath}, std::pair{&collisionLog, &options.collisionLogPath}}) {
-        if (!file->is_open())
+    for (Output* output : {&csv, &collisionLog}) {
+        if (!output->isOpen())
             continue;
-        file->flush();
-        if (!*file) {
-            err << "impetus-cli run: writing '" << **path << "' failed\n";
+        output->stream().flush();
+        if (!output->stream()) {
+            err << "impetus-cli run: writing '" << output->path() << "' failed\n";
             return kExitRuntimeFailure;
         }
     }
@@ -549,18 +670,19 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         return kExitRuntimeFailure;
     const double simulatedTime = static_cast<double>(totalSteps) * dt;
     const nlohmann::ordered_json summary = makeSummary(world, simulatedTime, totalSteps);
-    if (options.summaryPath && *options.summaryPath == "-") {
-        out << summary.dump(2) << '\n';
-    } else {
-        if (options.summaryPath) {
-            std::ofstream file(*options.summaryPath, std::ios::out | std::ios::trunc);
-            file << summary.dump(2) << '\n';
-            file.flush();
-            if (!file) {
-                err << "impetus-cli run: cannot write the summary file '" << *options.summaryPath << "'\n";
-                return kExitRuntimeFailure;
-            }
+    if (summaryOutput.isOpen()) {
+        summaryOutput.stream() << summary.dump(2) << '\n';
+        summaryOutput.stream().flush();
+        if (!summaryOutput.stream()) {
+            err << "impetus-cli run: writing the summary file '" << summaryOutput.path() << "' failed\n";
+            return kExitRuntimeFailure;
         }
+    }
+    // The closing line only when stdout carries nothing else, so that `--csv -` or `--summary -`
+    // stays a clean CSV or JSON.
+    const bool stdoutTaken = options.csvPath == kStdoutPath || options.summaryPath == kStdoutPath ||
+                             options.collisionLogPath == kStdoutPath;
+    if (!stdoutTaken) {
         out << "ran " << totalSteps << " steps (" << formatNumber(simulatedTime) << " s) with "
             << model::integratorName(world.settings.integrator) << ", dt = " << formatNumber(dt) << " s\n";
     }

@@ -546,3 +546,104 @@ TEST_F(Cli, TheDefaultSettingsGiveNoWarning)
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
+
+// ---- Issue 17, item 7: CLI surprises ------------------------------------------------------
+
+// --summary into a folder used to fail after the whole run, with no reason. Outputs are now
+// opened before the first step: the run fails at once (10 million steps would take minutes).
+TEST_F(Cli, AnUnwritableSummaryFailsBeforeTheRunWithTheReason)
+{
+    const CliResult r = runWithDeadline({"run", dataFile("projectile.json"), "--steps", "10000000", "--summary",
+                                         tempPath("").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("cannot write the summary file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("it is a directory"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AMissingFolderIsNamedWithItsReason)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--summary",
+                             tempPath("no-such-dir/summary.json").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("cannot write the summary file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+}
+
+// `run scene.json --csv scene.json` overwrote the scene with the CSV.
+TEST_F(Cli, AnOutputOverTheSceneIsRefusedAndTheSceneKept)
+{
+    const fs::path scene = tempPath("scene.json");
+    fs::copy_file(dataFile("projectile.json"), scene);
+    const std::string before = readFile(scene);
+    for (const char* flag : {"--csv", "--summary", "--collision-log"}) {
+        const CliResult r = run({"run", scene.string(), "--steps", "1", flag, (tempPath(".") / "scene.json").string()});
+        EXPECT_EQ(r.exitCode, 2) << flag;
+        EXPECT_NE(r.err.find(std::string(flag) + ": '"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("is the scene file being run; writing there would overwrite it"), std::string::npos)
+            << r.err;
+        EXPECT_EQ(readFile(scene), before) << flag;
+    }
+}
+
+TEST_F(Cli, TwoOutputsOnOneFileAreRefused)
+{
+    const std::string out = tempPath("out.txt").string();
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--csv", out, "--summary", out});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--csv and --summary both write"), std::string::npos) << r.err;
+}
+
+// `--csv -` made a file named "-"; like `--summary -` it means stdout, which then holds the CSV
+// alone (no closing "ran …" line).
+TEST_F(Cli, CsvDashIsStdout)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "2", "--csv", "-"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_FALSE(fs::exists("-"));
+    std::istringstream lines(r.out);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "time,body,x,y,angle,vx,vy,angularVelocity,colliding");
+    int rows = 0;
+    while (std::getline(lines, line)) {
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 3 * 2); // steps 0, 1 and 2, two bodies each
+}
+
+TEST_F(Cli, TwoOutputsOnStdoutAreRefused)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--csv", "-", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--csv - and --summary - both write to stdout"), std::string::npos) << r.err;
+}
+
+// --steps 9223372036854775807 ran for ever while --time refused huge values; --steps 1e20 was
+// "expected a whole number". One limit for both, and "too large" when it is passed.
+
+INSTANTIATE_TEST_SUITE_P(
+    Limits, CliUsage,
+    ::testing::Values(
+        UsageCase{"steps_int64_max", {"run", "SCENE", "--steps", "9223372036854775807"},
+                  "--steps: 9223372036854775807 is too large (at most 1000000000)"},
+        UsageCase{"steps_past_int64", {"run", "SCENE", "--steps", "99999999999999999999"},
+                  "--steps: 99999999999999999999 is too large (at most 1000000000)"},
+        UsageCase{"steps_1e20", {"run", "SCENE", "--steps", "1e20"}, "--steps: 1e20 is too large (at most 1000000000)"},
+        UsageCase{"steps_just_over", {"run", "SCENE", "--steps", "1000000001"}, "--steps: 1000000001 is too large"},
+        UsageCase{"time_too_long", {"run", "SCENE", "--time", "1e20"}, "steps, too large (at most 1000000000 steps)"},
+        UsageCase{"time_just_over", {"run", "SCENE", "--time", "10000000.01", "--dt", "0.01"},
+                  "--time: 10000000.01 s at dt = 0.01 s is 1000000001 steps, too large"},
+        UsageCase{"repeated_flag", {"run", "SCENE", "--steps", "2", "--steps", "3"}, "--steps: given twice"},
+        UsageCase{"repeated_flag_with_equals", {"run", "SCENE", "--csv=a.csv", "--csv", "b.csv"}, "--csv: given twice"},
+        UsageCase{"compare_and_csv_on_stdout", {"run", "SCENE", "--compare-rigid", "ball", "--csv", "-"},
+                  "--compare-rigid and --csv - both write to stdout"}),
+    [](const ::testing::TestParamInfo<UsageCase>& p) { return std::string(p.param.name); });
+
+// A whole number written as a double is taken when it is in range.
+TEST_F(Cli, StepsWrittenAsADoubleAreTakenWhenWhole)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1e2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["steps"], 100);
+}
