@@ -5,6 +5,7 @@
 #include "controller/soft/soft_body_builder.h"
 #include "controller/soft/soft_comparison.h"
 #include "controller/soft/soft_stability.h"
+#include "model/constants.h"
 #include "model/scene_io.h"
 #include "model/scene_warnings.h"
 
@@ -51,16 +52,26 @@ constexpr std::string_view kUsage =
     "                             [--integrator euler|semi-implicit-euler|rk4]\n"
     "                             [--csv FILE|-] [--sample-every N] [--summary FILE|-]\n"
     "                             [--collision-log FILE|-] [--compare-rigid BODY]\n"
+    "                             [--auto-density cost|measure|N]\n"
     "  impetus-cli validate SCENE.json\n"
     "\n"
     "run       steps the scene headless with its fixed time step (default: 10 s of simulated time)\n"
     "validate  prints 'ok', or every problem in the scene\n"
     "--compare-rigid BODY  also runs the scene with BODY rigid and soft and prints, as CSV on\n"
     "          stdout, how far apart its two centre-of-mass paths are over time\n"
+    "--auto-density  how soft bodies' \"auto\" density is chosen: cost (the default, the same on\n"
+    "          every machine), measure (timed on this machine, as the app does), or N per m²\n"
     "exit codes: 0 success, 1 failure at run time, 2 bad usage or a bad scene\n";
 
 /// The output name that means stdout, for --csv, --summary and --collision-log.
 constexpr std::string_view kStdoutPath = "-";
+
+/// How a headless run resolves a soft body's `"auto"` density.
+enum class AutoDensityRule {
+    CostModel, ///< the default: the same on every machine (kSoftAutoHeadlessBudget)
+    Measure, ///< timed on this machine, as the app does
+    Given, ///< the number given with --auto-density
+};
 
 /// What `run` was asked to do.
 struct RunOptions {
@@ -74,6 +85,10 @@ struct RunOptions {
     std::optional<std::string> summaryPath;
     std::optional<std::string> collisionLogPath;
     std::optional<std::string> compareRigid; ///< body name: run it rigid and soft and compare
+    /// How "auto" soft density is chosen (--auto-density): by the cost model, by timing this
+    /// machine, or as the number given.
+    AutoDensityRule autoDensityRule = AutoDensityRule::CostModel;
+    Scalar autoDensity = 0; ///< ellipses per m², for AutoDensityRule::Given
 };
 
 /// Thrown inside argument parsing only; caught in runCli and turned into exit code 2.
@@ -225,6 +240,22 @@ RunOptions parseRunOptions(std::span<const std::string> args)
             options.collisionLogPath = value();
         } else if (arg == "--compare-rigid") {
             options.compareRigid = value();
+        } else if (arg == "--auto-density") {
+            const std::string text = value();
+            if (text == "cost") {
+                options.autoDensityRule = AutoDensityRule::CostModel;
+            } else if (text == "measure") {
+                options.autoDensityRule = AutoDensityRule::Measure;
+            } else {
+                double density = 0;
+                const char* end = text.data() + text.size();
+                const auto [ptr, ec] = std::from_chars(text.data(), end, density);
+                if (ec != std::errc{} || ptr != end || !std::isfinite(density) || !(density > 0))
+                    throw UsageError{"--auto-density: expected 'cost', 'measure' or a number of ellipses per m² "
+                                     "greater than 0, got '" + text + "'"};
+                options.autoDensityRule = AutoDensityRule::Given;
+                options.autoDensity = density;
+            }
         } else if (arg.rfind("--", 0) == 0 || (arg.size() > 1 && arg[0] == '-')) {
             throw UsageError{"unknown option '" + arg + "'"};
         } else if (!haveScene) {
@@ -343,8 +374,25 @@ private:
 
 nlohmann::ordered_json vectorJson(const Vec2& v) { return nlohmann::ordered_json::array({v.x(), v.y()}); }
 
+/// What chose each soft body's density, for the notes and the summary.
+std::string_view densityChooser(bool automatic, AutoDensityRule rule)
+{
+    if (!automatic)
+        return "scene";
+    switch (rule) {
+    case AutoDensityRule::CostModel:
+        return "cost model";
+    case AutoDensityRule::Measure:
+        return "measured";
+    case AutoDensityRule::Given:
+        return "--auto-density";
+    }
+    return "scene";
+}
+
 /// The end-of-run summary in the contract's layout and key order.
-nlohmann::ordered_json makeSummary(const model::World& world, double time, std::int64_t steps)
+nlohmann::ordered_json makeSummary(const model::World& world, double time, std::int64_t steps,
+                                   const std::vector<bool>& automatic, AutoDensityRule rule)
 {
     const controller::Energy energy = controller::computeEnergy(world);
     nlohmann::ordered_json summary;
@@ -371,8 +419,10 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
         b["colliding"] = body.colliding;
         const model::SoftGrid* grid = world.softGrid(model::BodyId{static_cast<std::uint32_t>(bodies.size())});
         b["ellipses"] = grid ? grid->size() : 0;
-        if (grid) // an extension: the density the grid was built at ("auto" shows its choice)
+        if (grid) { // an extension: the density the grid was built at, and what chose it
             b["ellipsesPerSquareMeter"] = grid->ellipsesPerSquareMeter;
+            b["densityChosenBy"] = densityChooser(automatic[bodies.size()], rule);
+        }
         bodies.push_back(std::move(b));
     }
     summary["bodies"] = std::move(bodies);
@@ -512,14 +562,69 @@ private:
     Clock::time_point m_last;
 };
 
-/// Notes on stderr for the soft bodies: the density "auto" chose, and the substeps their stiffness
-/// needs (with the reason).
-void reportSoftBodies(const model::World& world, std::ostream& err)
+/// The soft bodies whose density is `"auto"`, by index.
+std::vector<bool> autoDensityBodies(const model::World& world)
+{
+    std::vector<bool> automatic;
+    for (const model::Body& body : world.bodies)
+        automatic.push_back(body.soft && body.soft->autoDensity);
+    return automatic;
+}
+
+/// `world` with every `"auto"` soft body fixed at `density`.
+void fixAutoDensity(model::World& world, Scalar density)
+{
+    for (model::Body& body : world.bodies) {
+        if (body.soft && body.soft->autoDensity) {
+            body.soft->autoDensity = false;
+            body.soft->ellipsesPerSquareMeter = density;
+        }
+    }
+}
+
+/// The cost model for `"auto"`: the highest of kSoftAutoDensities at which the world's ellipses
+/// times its soft substeps per step stay within kSoftAutoHeadlessBudget (the lowest when none
+/// does). It builds the grids at each candidate and counts; it times nothing, so every machine
+/// picks the same.
+Scalar costModelDensity(const model::World& world)
+{
+    Scalar chosen = constants::kSoftAutoDensities[0];
+    for (const Scalar density : constants::kSoftAutoDensities) {
+        model::World trial = world;
+        fixAutoDensity(trial, density);
+        controller::prepareSoftBodies(trial);
+        std::size_t ellipses = 0;
+        for (const model::SoftGrid& grid : trial.softBodies)
+            ellipses += grid.size();
+        const auto substeps = static_cast<std::size_t>(controller::softStability(trial).substeps);
+        if (ellipses * substeps > constants::kSoftAutoHeadlessBudget)
+            break;
+        chosen = density;
+    }
+    return chosen;
+}
+
+/// Resolves `"auto"` in `world` as `options` say (measuring is left to prepareSoftBodies).
+void resolveAutoDensity(model::World& world, const RunOptions& options)
+{
+    if (options.autoDensityRule == AutoDensityRule::CostModel)
+        fixAutoDensity(world, costModelDensity(world));
+    else if (options.autoDensityRule == AutoDensityRule::Given)
+        fixAutoDensity(world, options.autoDensity);
+}
+
+/// Notes on stderr for the soft bodies: the density "auto" chose and how, and the substeps their
+/// stiffness needs (with the reason).
+void reportSoftBodies(const model::World& world, const std::vector<bool>& automatic, AutoDensityRule rule,
+                      std::ostream& err)
 {
     for (const model::SoftGrid& grid : world.softBodies) {
-        if (grid.settings.autoDensity) {
+        if (automatic[grid.body.index]) {
+            const std::string_view how = rule == AutoDensityRule::CostModel ? "by the cost model"
+                                         : rule == AutoDensityRule::Measure ? "by timing this machine"
+                                                                            : "as --auto-density says";
             err << "impetus-cli run: note: soft body '" << world.body(grid.body).name << "': \"auto\" chose "
-                << formatNumber(grid.ellipsesPerSquareMeter) << " ellipses per m² on this machine ("
+                << formatNumber(grid.ellipsesPerSquareMeter) << " ellipses per m² " << how << " ("
                 << grid.size() << " ellipses)\n";
         }
     }
@@ -627,9 +732,12 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
 
     // Soft bodies get their grids now, so that "auto" measures before the run and both notes
     // below come first.
+    // "auto" is resolved first, so that --compare-rigid runs at the same density as the run.
+    const std::vector<bool> automatic = autoDensityBodies(world);
+    resolveAutoDensity(world, options);
     const model::World initial = world;
     controller::prepareSoftBodies(world);
-    reportSoftBodies(world, err);
+    reportSoftBodies(world, automatic, options.autoDensityRule, err);
 
     // A state that starts finite can still overflow the summary's sums; failing now saves the run.
     if (!diagnosticsFinite(world, 0, dt, err))
@@ -669,7 +777,8 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
     if (!diagnosticsFinite(world, totalSteps, dt, err))
         return kExitRuntimeFailure;
     const double simulatedTime = static_cast<double>(totalSteps) * dt;
-    const nlohmann::ordered_json summary = makeSummary(world, simulatedTime, totalSteps);
+    const nlohmann::ordered_json summary =
+        makeSummary(world, simulatedTime, totalSteps, automatic, options.autoDensityRule);
     if (summaryOutput.isOpen()) {
         summaryOutput.stream() << summary.dump(2) << '\n';
         summaryOutput.stream().flush();

@@ -224,6 +224,15 @@ inline constexpr Scalar kSoftFrameBudgetFraction = 0.5;
 /// (the first pays for allocations and cold caches).
 inline constexpr int kSoftAutoTrialFrames = 3;
 
+/// The headless runner picks `"auto"` without timing anything, so that a run gives the same grid
+/// on every machine and under any load: the highest of kSoftAutoDensities for which the world's
+/// ellipses times its soft substeps per step stay within this budget (the work of one step grows
+/// with both). 16384 is what the timing picks on an idle classroom desktop: measured here, a step
+/// costs about 0.14 µs per ellipse-substep on an idle core (0.28 µs with the machine loaded), and
+/// half a 60 Hz frame (four steps) then holds about 15,000 of them; the 1 m² test jelly gets
+/// 1024 per m² (1024 ellipses × 14 substeps), as the timing gave there when idle. docs/cli.md.
+inline constexpr std::size_t kSoftAutoHeadlessBudget = 16384;
+
 /// Largest |λ|·h at which RK4 is used on a soft grid, with λ the fastest grid eigenvalue. RK4's
 /// stability region reaches 2.83 along the imaginary axis and 2.79 along the negative real axis;
 /// 2.5 keeps a margin for the bound's looseness in between.

@@ -647,3 +647,88 @@ TEST_F(Cli, StepsWrittenAsADoubleAreTakenWhenWhole)
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["steps"], 100);
 }
+
+// ---- Issue 17, item 8: "auto" soft density in headless runs -------------------------------
+
+/// tests/app/data/soft.json with its jelly `size` m square and "auto" density.
+std::string autoJellyScene(int size)
+{
+    std::string text = readFile(dataFile("soft.json"));
+    const auto replace = [&text](const std::string& from, const std::string& to) {
+        const std::size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos)
+            text.replace(at, from.size(), to);
+    };
+    replace(R"("ellipsesPerSquareMeter": 64)", R"("ellipsesPerSquareMeter": "auto")");
+    const std::string side = std::to_string(size);
+    replace(R"("shape": { "type": "box", "width": 1, "height": 1 }, "position": [0, 2])",
+            R"("shape": { "type": "box", "width": )" + side + R"(, "height": )" + side + R"( }, "position": [0, 3])");
+    return text;
+}
+
+/// The jelly's entry in a summary.
+nlohmann::json jellyOf(const std::string& summary) { return nlohmann::json::parse(summary)["bodies"][1]; }
+
+/// Ellipses × substeps per step of a run, from its summary and its substep note (1 without one).
+long long ellipseSubsteps(const CliResult& r)
+{
+    long long substeps = 1;
+    const std::size_t at = r.err.find("split into ");
+    if (at != std::string::npos)
+        substeps = std::stoll(r.err.substr(at + std::string("split into ").size()));
+    return jellyOf(r.out)["ellipses"].get<long long>() * substeps;
+}
+
+// Under load the timing picked 512 per m² instead of 1024. Headless, "auto" now follows a fixed
+// cost model: the same on every run and machine, and the summary says what chose it.
+TEST_F(Cli, AutoDensityIsTheSameOnEveryRun)
+{
+    const fs::path scene = tempPath("jelly.json");
+    std::ofstream(scene) << autoJellyScene(1);
+    for (int run = 0; run < 3; ++run) {
+        const CliResult r = this->run({"run", scene.string(), "--steps", "0", "--summary", "-"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json jelly = jellyOf(r.out);
+        EXPECT_EQ(jelly["ellipsesPerSquareMeter"], 1024.0);
+        EXPECT_EQ(jelly["densityChosenBy"], "cost model");
+        EXPECT_NE(r.err.find("\"auto\" chose 1024 ellipses per m² by the cost model"), std::string::npos) << r.err;
+    }
+}
+
+// The cost model takes the densest of 64 … 1024 per m² whose ellipses × substeps per step stay
+// within 16384: checked on a 3 m × 3 m jelly against the next density up, run as a fixed one.
+TEST_F(Cli, TheCostModelTakesTheDensestGridWithinItsBudget)
+{
+    constexpr long long kBudget = 16384;
+    const fs::path scene = tempPath("big-jelly.json");
+    std::ofstream(scene) << autoJellyScene(3);
+    const CliResult chosen = run({"run", scene.string(), "--steps", "0", "--summary", "-"});
+    ASSERT_EQ(chosen.exitCode, 0) << chosen.err;
+    const double density = jellyOf(chosen.out)["ellipsesPerSquareMeter"].get<double>();
+    EXPECT_LE(ellipseSubsteps(chosen), kBudget);
+    ASSERT_LT(density, 1024.0);
+    const CliResult denser =
+        run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", std::to_string(static_cast<int>(2 * density))});
+    ASSERT_EQ(denser.exitCode, 0) << denser.err;
+    EXPECT_GT(ellipseSubsteps(denser), kBudget);
+}
+
+TEST_F(Cli, AutoDensityFlagFixesTheDensityOrMeasures)
+{
+    const fs::path scene = tempPath("jelly.json");
+    std::ofstream(scene) << autoJellyScene(1);
+    const CliResult given = run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", "256"});
+    ASSERT_EQ(given.exitCode, 0) << given.err;
+    EXPECT_EQ(jellyOf(given.out)["ellipsesPerSquareMeter"], 256.0);
+    EXPECT_EQ(jellyOf(given.out)["densityChosenBy"], "--auto-density");
+    const CliResult measured = run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", "measure"});
+    ASSERT_EQ(measured.exitCode, 0) << measured.err;
+    EXPECT_EQ(jellyOf(measured.out)["densityChosenBy"], "measured");
+    const CliResult bad = run({"run", scene.string(), "--auto-density", "lots"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--auto-density: expected 'cost', 'measure' or a number"), std::string::npos) << bad.err;
+    // A density the scene gives is the scene's.
+    const CliResult fixed = run({"run", dataFile("soft.json"), "--steps", "0", "--summary", "-"});
+    EXPECT_EQ(jellyOf(fixed.out)["densityChosenBy"], "scene");
+}
