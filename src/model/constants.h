@@ -83,6 +83,17 @@ inline constexpr Scalar kReuseContactsMaxTravel = kSpeculativeMargin;
 /// promise to hold (a step of seconds has no use in a lesson on mechanics).
 inline constexpr int kMaxSolverSubsteps = 240;
 
+// ---- Settings the engine is tested for (model/scene_warnings) --------------------------------
+
+/// Largest mass ratio between two dynamic bodies that touch at load time or are joined by a
+/// spring or joint, beyond which a warning is given. Measured on a box resting on a box on the
+/// ground at the default step: at 100 the lower box sinks 1.2 mm into the ground, at 1000 the
+/// upper one pushes it through (the sequential-impulse solver converges slowly on such ratios).
+inline constexpr Scalar kMaxContactMassRatio = 100;
+
+/// At most this many pairs of bodies are named in mass-ratio warnings; the rest are counted.
+inline constexpr int kMaxMassRatioWarnings = 5;
+
 /// Sequential-impulse iterations per step for velocities, and non-linear Gauss–Seidel iterations
 /// for positions. Box2D's defaults, which keep a 10-box stack standing at 60 Hz; at 240 Hz they
 /// are generous.
@@ -222,6 +233,15 @@ inline constexpr Scalar kSoftFrameBudgetFraction = 0.5;
 /// Frames of trial simulation per candidate density when "auto" measures; the fastest one counts
 /// (the first pays for allocations and cold caches).
 inline constexpr int kSoftAutoTrialFrames = 3;
+
+/// The headless runner picks `"auto"` without timing anything, so that a run gives the same grid
+/// on every machine and under any load: the highest of kSoftAutoDensities for which the world's
+/// ellipses times its soft substeps per step stay within this budget (the work of one step grows
+/// with both). 16384 is what the timing picks on an idle classroom desktop: measured here, a step
+/// costs about 0.14 µs per ellipse-substep on an idle core (0.28 µs with the machine loaded), and
+/// half a 60 Hz frame (four steps) then holds about 15,000 of them; the 1 m² test jelly gets
+/// 1024 per m² (1024 ellipses × 14 substeps), as the timing gave there when idle. docs/cli.md.
+inline constexpr std::size_t kSoftAutoHeadlessBudget = 16384;
 
 /// Largest |λ|·h at which RK4 is used on a soft grid, with λ the fastest grid eigenvalue. RK4's
 /// stability region reaches 2.83 along the imaginary axis and 2.79 along the negative real axis;

@@ -442,34 +442,110 @@ std::vector<std::vector<std::size_t>> mergeConvex(
     return out;
 }
 
-} // namespace
+/// The vertices multiplied by the power of two that brings the largest coordinate into [1, 2).
+std::vector<Vec2> scaledToUnitSize(std::span<const Vec2> vertices)
+{
+    Scalar largest = 0;
+    for (const Vec2& v : vertices)
+        largest = std::max({largest, std::abs(v.x()), std::abs(v.y())});
+    std::vector<Vec2> out(vertices.begin(), vertices.end());
+    if (largest == 0)
+        return out;
+    const int exponent = std::ilogb(largest);
+    for (Vec2& v : out)
+        v = Vec2(std::ldexp(v.x(), -exponent), std::ldexp(v.y(), -exponent));
+    return out;
+}
 
-std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
+/// An axis-aligned box, m.
+struct Bounds {
+    Vec2 lo;
+    Vec2 hi;
+};
+
+/// Every pair (i, j), i < j, of boxes that overlap once each is grown by `margin` on every side,
+/// in increasing order of i then j. The boxes are binned in a uniform grid of about as many cells
+/// as boxes, and only boxes that share a cell are compared, each pair in one cell only (the one
+/// holding the corner where their overlap starts). A polygon's edges or vertices, spread along its
+/// outline, then cost about n instead of the n² of trying every pair; only boxes that really
+/// overlap many others (long edges across a fine zigzag) cost more.
+std::vector<std::pair<std::size_t, std::size_t>> overlappingPairs(const std::vector<Bounds>& boxes, Scalar margin)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    if (boxes.empty())
+        return pairs;
+    Vec2 lo = boxes.front().lo;
+    Vec2 hi = boxes.front().hi;
+    for (const Bounds& box : boxes) {
+        lo = lo.cwiseMin(box.lo);
+        hi = hi.cwiseMax(box.hi);
+    }
+    const Vec2 extent = (hi - lo).array() + 2 * margin;
+    // Square cells, about one per box; at least one cell across each side.
+    const Scalar cellsWanted = static_cast<Scalar>(boxes.size());
+    const Scalar area = extent.x() * extent.y();
+    Scalar cell = area > 0 ? std::sqrt(area / cellsWanted) : std::max(extent.x(), extent.y()) / cellsWanted;
+    if (!(cell > 0))
+        cell = 1;
+    const auto cellsAlong = [&](Scalar length) {
+        return static_cast<std::size_t>(std::clamp(std::ceil(length / cell), Scalar(1), cellsWanted));
+    };
+    const std::size_t columns = cellsAlong(extent.x());
+    const std::size_t rows = cellsAlong(extent.y());
+    const auto column = [&](Scalar x) {
+        return static_cast<std::size_t>(std::clamp(std::floor((x - lo.x() + margin) / cell), Scalar(0),
+                                                   static_cast<Scalar>(columns - 1)));
+    };
+    const auto row = [&](Scalar y) {
+        return static_cast<std::size_t>(std::clamp(std::floor((y - lo.y() + margin) / cell), Scalar(0),
+                                                   static_cast<Scalar>(rows - 1)));
+    };
+
+    std::vector<std::vector<std::size_t>> cells(columns * rows);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        for (std::size_t r = row(boxes[i].lo.y() - margin); r <= row(boxes[i].hi.y() + margin); ++r) {
+            for (std::size_t c = column(boxes[i].lo.x() - margin); c <= column(boxes[i].hi.x() + margin); ++c)
+                cells[r * columns + c].push_back(i);
+        }
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+        for (std::size_t c = 0; c < columns; ++c) {
+            const std::vector<std::size_t>& members = cells[r * columns + c];
+            for (std::size_t k = 0; k < members.size(); ++k) {
+                const Bounds& a = boxes[members[k]];
+                for (std::size_t m = k + 1; m < members.size(); ++m) {
+                    const Bounds& b = boxes[members[m]];
+                    if (a.lo.x() > b.hi.x() + 2 * margin || b.lo.x() > a.hi.x() + 2 * margin ||
+                        a.lo.y() > b.hi.y() + 2 * margin || b.lo.y() > a.hi.y() + 2 * margin)
+                        continue;
+                    // The overlap starts at the larger of the two low corners; only its cell reports.
+                    if (column(std::max(a.lo.x(), b.lo.x()) - margin) != c || row(std::max(a.lo.y(), b.lo.y()) - margin) != r)
+                        continue;
+                    pairs.push_back(std::minmax(members[k], members[m]));
+                }
+            }
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+/// validatePolygon's geometric tests, on finite vertices (at least three).
+std::vector<PolygonIssue> checkSimple(std::span<const Vec2> vertices)
 {
     std::vector<PolygonIssue> issues;
     const std::size_t n = vertices.size();
-    if (n < kMinVertices) {
-        issues.push_back({PolygonIssueKind::TooFewVertices,
-            "polygon needs at least " + std::to_string(kMinVertices) + " vertices (got " + std::to_string(n) + ")"});
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!isFinite(vertices[i]))
-            issues.push_back(
-                {PolygonIssueKind::NonFiniteVertex, "vertex " + std::to_string(i) + " is not a finite number"});
-    }
-    // Every later test measures distances and areas, meaningless with NaNs or too few points.
-    if (!issues.empty())
-        return issues;
-
     const Scalar tolerance = pointTolerance(vertices);
     std::vector<bool> repeatsEarlier(n, false);
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t j = i + 1; j < n; ++j) {
-            if ((vertices[i] - vertices[j]).norm() <= tolerance) {
-                issues.push_back({PolygonIssueKind::DuplicateVertex,
-                    "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are the same point"});
-                repeatsEarlier[j] = true;
-            }
+    std::vector<Bounds> points;
+    points.reserve(n);
+    for (const Vec2& v : vertices)
+        points.push_back({v, v});
+    for (const auto& [i, j] : overlappingPairs(points, tolerance)) {
+        if ((vertices[i] - vertices[j]).norm() <= tolerance) {
+            issues.push_back({PolygonIssueKind::DuplicateVertex,
+                "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are the same point"});
+            repeatsEarlier[j] = true;
         }
     }
     const bool hasDuplicates = !issues.empty();
@@ -497,23 +573,56 @@ std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
     if (hasDuplicates)
         return issues;
 
+    // Edges that cross, touch or come within the tolerance have boxes that overlap when grown by
+    // it, so only those pairs need the exact test.
+    std::vector<Bounds> edges;
+    edges.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t j = i + 1; j < n; ++j) {
-            bool intersects = false;
-            if (j == i + 1) {
-                intersects = edgesFoldBack(vertices[i], vertices[j], vertices[(j + 1) % n], tolerance);
-            } else if (i == 0 && j == n - 1) {
-                intersects = edgesFoldBack(vertices[n - 1], vertices[0], vertices[1], tolerance);
-            } else {
-                intersects = segmentsTouch(vertices[i], vertices[i + 1], vertices[j], vertices[(j + 1) % n], tolerance);
-            }
-            if (intersects) {
-                issues.push_back({PolygonIssueKind::SelfIntersection,
-                    "polygon self-intersects (edges " + std::to_string(i) + " and " + std::to_string(j) + ")"});
-            }
+        const Vec2& a = vertices[i];
+        const Vec2& b = vertices[(i + 1) % n];
+        edges.push_back({a.cwiseMin(b), a.cwiseMax(b)});
+    }
+    for (const auto& [i, j] : overlappingPairs(edges, tolerance)) {
+        bool intersects = false;
+        if (j == i + 1) {
+            intersects = edgesFoldBack(vertices[i], vertices[j], vertices[(j + 1) % n], tolerance);
+        } else if (i == 0 && j == n - 1) {
+            intersects = edgesFoldBack(vertices[n - 1], vertices[0], vertices[1], tolerance);
+        } else {
+            intersects = segmentsTouch(vertices[i], vertices[i + 1], vertices[j], vertices[(j + 1) % n], tolerance);
+        }
+        if (intersects) {
+            issues.push_back({PolygonIssueKind::SelfIntersection,
+                "polygon self-intersects (edges " + std::to_string(i) + " and " + std::to_string(j) + ")"});
         }
     }
     return issues;
+}
+
+} // namespace
+
+std::vector<PolygonIssue> validatePolygon(std::span<const Vec2> vertices)
+{
+    std::vector<PolygonIssue> issues;
+    const std::size_t n = vertices.size();
+    if (n < kMinVertices) {
+        issues.push_back({PolygonIssueKind::TooFewVertices,
+            "polygon needs at least " + std::to_string(kMinVertices) + " vertices (got " + std::to_string(n) + ")"});
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!isFinite(vertices[i]))
+            issues.push_back(
+                {PolygonIssueKind::NonFiniteVertex, "vertex " + std::to_string(i) + " is not a finite number"});
+    }
+    // Every later test measures distances and areas, meaningless with NaNs or too few points.
+    if (!issues.empty())
+        return issues;
+    // The tests below square lengths: for a polygon 1e160 m across they overflow (a triangle was
+    // called collinear), for one 1e-200 m across they underflow (its vertices were "the same
+    // point"). Judging a copy scaled by a power of two to about unit size gives the same answers
+    // the tests give at a classroom scale, since such a scaling is exact in binary floating point.
+    const std::vector<Vec2> unitScaled = scaledToUnitSize(vertices);
+    return checkSimple(unitScaled);
 }
 
 Scalar signedArea(std::span<const Vec2> vertices)

@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <new>
 #include <random>
 #include <span>
 #include <system_error>
@@ -259,6 +260,54 @@ std::string parseErrorDetail(const std::string& what)
 }
 
 // ------------------------------------------------------------------------------------------------
+// Freeing a document without allocating
+
+/// Empties `value` from the leaves up without allocating. nlohmann's own destructor flattens a
+/// container onto a heap-allocated stack first, so destroying a large document while memory has
+/// run out throws from a destructor, and the program aborts instead of reporting the problem.
+/// Popping the last child of each container, once the child is itself empty, frees the same
+/// memory with no allocation. The recursion is as deep as the document, at most kMaxJsonDepth.
+void dismantle(Json& value) noexcept
+{
+    if (auto* array = value.get_ptr<Json::array_t*>()) {
+        while (!array->empty()) {
+            dismantle(array->back());
+            array->pop_back();
+        }
+    } else if (auto* object = value.get_ptr<Json::object_t*>()) {
+        while (!object->empty()) {
+            const auto last = std::prev(object->end());
+            dismantle(last->second);
+            object->erase(last);
+        }
+    }
+}
+
+/// A parsed document that is freed by dismantle(), also when an exception (out of memory)
+/// unwinds past it.
+class Document {
+public:
+    Document() = default;
+    explicit Document(Json value) : m_value(std::move(value)) {}
+    ~Document() { dismantle(m_value); }
+    Document(const Document&) = delete;
+    Document& operator=(const Document&) = delete;
+
+    Json& get() { return m_value; }
+    const Json& get() const { return m_value; }
+
+private:
+    Json m_value;
+};
+
+/// The message for running out of memory while reading `bytes` bytes of scene.
+std::string outOfMemoryReason(std::size_t bytes)
+{
+    return "out of memory while reading the scene (" + std::to_string(bytes) +
+           " bytes of JSON): the scene is too large for the memory available";
+}
+
+// ------------------------------------------------------------------------------------------------
 // Parsing: a SAX handler that builds the document and knows where it is, so that problems the
 // parser itself finds (numbers too large for a double, repeated keys) get a real JSON path.
 
@@ -269,7 +318,7 @@ public:
     {
     }
 
-    Json takeDocument() { return std::move(m_document); }
+    Json takeDocument() { return std::move(m_document.get()); }
 
     bool null() override { return addValue(Json(nullptr)) != nullptr; }
     bool boolean(bool value) override { return addValue(Json(value)) != nullptr; }
@@ -331,8 +380,8 @@ private:
     Json* addValue(Json value)
     {
         if (m_frames.empty()) {
-            m_document = std::move(value);
-            return &m_document;
+            m_document.get() = std::move(value);
+            return &m_document.get();
         }
         Frame& top = m_frames.back();
         if (top.value->is_array()) {
@@ -347,6 +396,14 @@ private:
 
     bool open(Json container)
     {
+        if (m_frames.size() >= kMaxJsonDepth) {
+            // Stopping here keeps a hostile file (ten million '[') from costing a document level
+            // per byte; the path shown is the one where the limit was crossed.
+            m_problems.push_back({displayPath(pendingValuePath()),
+                                  "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                      " levels of arrays and objects (a scene needs 6)"});
+            return false;
+        }
         std::string segment = pendingSegment();
         Json* where = addValue(std::move(container));
         m_frames.push_back(Frame{where, std::move(segment), {}, 0});
@@ -390,12 +447,15 @@ private:
 
     std::string_view m_text;
     std::vector<SceneProblem>& m_problems;
-    Json m_document;
+    Document m_document;
     std::vector<Frame> m_frames;
 };
 
 // ------------------------------------------------------------------------------------------------
 // Validation: reads the document into a World, reporting every problem it meets.
+
+/// |v|, m, without overflow or underflow in the squares (a vector of 1e160 m has a finite length).
+Scalar length(const Vec2& v) { return std::hypot(v.x(), v.y()); }
 
 /// What a number must satisfy besides being finite.
 enum class Bound {
@@ -942,7 +1002,7 @@ private:
             spring.bodyB = b.id;
             if (!restLengthGiven && posesKnown(a, b)) {
                 const Vec2 endA = world.body(spring.bodyA).worldPoint(spring.anchorA);
-                spring.restLength = (worldPointOf(world, spring.bodyB, spring.anchorB) - endA).norm();
+                spring.restLength = length(Vec2(worldPointOf(world, spring.bodyB, spring.anchorB) - endA));
             }
             world.springs.push_back(spring);
         }
@@ -1022,11 +1082,13 @@ private:
         if (posesKnown(a, b)) {
             const Vec2 endA = world.body(joint.bodyA).worldPoint(joint.anchorA);
             const Vec2 endB = worldPointOf(world, joint.bodyB, joint.anchorB);
-            joint.length = (endB - endA).norm();
+            // hypot, not norm(): the squares of a length of 1e160 m overflow, and an infinite
+            // length once made a rod that long "zero length" (infinity is not above infinity).
+            joint.length = length(Vec2(endB - endA));
             // A rod keeps a direction as well as a length; with both ends on one point it has
             // none. "One point" is judged relative to how far from the origin the ends are, since
             // the rotation that places the anchors rounds at that scale.
-            const Scalar scale = std::max({Scalar(1), endA.norm(), endB.norm()});
+            const Scalar scale = std::max({Scalar(1), length(endA), length(endB)});
             if (!(joint.length > constants::kRelativePointTolerance * scale)) {
                 report(path, "rod has zero length: its two anchors are at the same point at load time");
                 return;
@@ -1227,6 +1289,31 @@ SceneLoadResult fileProblem(std::string reason)
     return SceneLoadResult{std::nullopt, {SceneProblem{std::string(kFilePath), std::move(reason)}}};
 }
 
+/// Why a path that exists is not read: what kind of file it is.
+std::string notRegularReason(const fs::file_status& status)
+{
+    switch (status.type()) {
+    case fs::file_type::character:
+    case fs::file_type::block:
+        return "it is a device, not a regular file";
+    case fs::file_type::fifo:
+        return "it is a pipe (FIFO), not a regular file";
+    case fs::file_type::socket:
+        return "it is a socket, not a regular file";
+    default:
+        return "it is not a regular file";
+    }
+}
+
+/// The reason a file over kMaxSceneFileBytes is not read.
+std::string tooLargeReason(const fs::path& path)
+{
+    constexpr std::uintmax_t kMebibyte = 1024 * 1024;
+    return "cannot read " + quotedPath(path) + ": the file is larger than the " +
+           std::to_string(kMaxSceneFileBytes / kMebibyte) + " MiB (" + std::to_string(kMaxSceneFileBytes) +
+           " bytes) a scene file may have";
+}
+
 std::string saveFailure(const fs::path& path, const std::string& reason)
 {
     return "cannot save " + quotedPath(path) + ": " + reason;
@@ -1341,18 +1428,21 @@ SceneLoadResult parseScene(std::string_view jsonText)
         const bool parsed = Json::sax_parse(jsonText.data(), jsonText.data() + jsonText.size(), &builder);
         if (!parsed)
             return SceneLoadResult{std::nullopt, std::move(problems)};
-        const Json document = builder.takeDocument();
+        const Document document(builder.takeDocument());
 
         SceneReader reader;
-        std::optional<World> world = reader.read(document);
+        std::optional<World> world = reader.read(document.get());
         std::vector<SceneProblem> found = reader.takeProblems();
         // Repeated keys (found while parsing) come first: they are about the text itself.
         problems.insert(problems.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
         if (!problems.empty())
             return SceneLoadResult{std::nullopt, std::move(problems)};
         return SceneLoadResult{std::move(world), {}};
+    } catch (const std::bad_alloc&) {
+        // The document was freed on the way here (Document), so this message has memory again.
+        return SceneLoadResult{std::nullopt, {SceneProblem{std::string(kRootPath), outOfMemoryReason(jsonText.size())}}};
     } catch (const std::exception& error) {
-        // Only running out of memory gets here; the promise is a message, never a crash.
+        // Nothing else is known to throw; the promise is a message, never a crash.
         return SceneLoadResult{std::nullopt,
                                {SceneProblem{std::string(kRootPath),
                                              std::string("cannot read the scene: ") + error.what()}}};
@@ -1362,21 +1452,38 @@ SceneLoadResult parseScene(std::string_view jsonText)
 SceneLoadResult loadSceneFile(const std::filesystem::path& path)
 {
     try {
+        // Judge the file before opening it: opening a pipe blocks until someone writes to it,
+        // and a device such as /dev/zero never ends.
         std::error_code ec;
-        if (fs::is_directory(path, ec))
+        const fs::file_status status = fs::status(path, ec);
+        if (fs::is_directory(status))
             return fileProblem("cannot open " + quotedPath(path) + ": it is a directory");
+        if (fs::exists(status) && !fs::is_regular_file(status))
+            return fileProblem("cannot open " + quotedPath(path) + ": " + notRegularReason(status));
+        if (fs::is_regular_file(status)) {
+            const std::uintmax_t size = fs::file_size(path, ec);
+            if (!ec && size > kMaxSceneFileBytes)
+                return fileProblem(tooLargeReason(path));
+        }
         errno = 0;
         const FileHandle file(std::fopen(path.string().c_str(), "rb"));
         if (!file)
             return fileProblem("cannot open " + quotedPath(path) + ": " + errorText(errno));
+        // The read stops one byte past the cap whatever the file claimed to be, so a file that
+        // grows while it is read (or one replaced by a device in between) cannot run away.
         std::string text;
         std::vector<char> chunk(kReadChunkBytes);
         std::size_t got = 0;
-        while ((got = std::fread(chunk.data(), 1, chunk.size(), file.get())) > 0)
+        while ((got = std::fread(chunk.data(), 1, chunk.size(), file.get())) > 0) {
             text.append(chunk.data(), got);
+            if (text.size() > kMaxSceneFileBytes)
+                return fileProblem(tooLargeReason(path));
+        }
         if (std::ferror(file.get()))
             return fileProblem("cannot read " + quotedPath(path) + ": " + errorText(errno));
         return parseScene(text);
+    } catch (const std::bad_alloc&) {
+        return fileProblem("cannot read " + quotedPath(path) + ": out of memory");
     } catch (const std::exception& error) {
         return fileProblem("cannot read " + quotedPath(path) + ": " + error.what());
     }

@@ -5,6 +5,8 @@
 
 #include "model/world.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,6 +20,18 @@ inline constexpr int kSceneFormatVersion = 1;
 
 /// The value of the scene key `format`.
 inline constexpr std::string_view kSceneFormatName = "impetus-scene";
+
+/// The largest scene file read, bytes (64 MiB). A pretty-printed body takes about 400 bytes, so
+/// this holds some 150,000 bodies, far beyond a lesson's scene; the parsed document takes about
+/// ten times the file's size in memory, so the cap also bounds what a stray file can cost (a
+/// device such as /dev/zero, or a log file opened by mistake). docs/scene-format.md, "Limits".
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 64ull * 1024 * 1024;
+
+/// The deepest nesting of JSON arrays and objects read. A scene nests at most 6 deep
+/// (root → bodies → body → shape → vertices → [x, y]); deeper input is refused while it is
+/// parsed, before it can cost memory or time (a file of ten million '[' would otherwise build a
+/// ten-million-level document).
+inline constexpr std::size_t kMaxJsonDepth = 64;
 
 /// One problem in a scene: the JSON path (e.g. "bodies[2].shape.vertices", or "(root)" for the
 /// document itself) and the reason. toString() gives "path: reason".
@@ -36,11 +50,15 @@ struct SceneLoadResult {
     bool ok() const { return world.has_value(); } ///< true when the scene was read
 };
 
-/// Parses and validates scene JSON text. Every body's derived data is computed (Body::updateDerived),
+/// Parses and validates scene JSON text. Nesting deeper than kMaxJsonDepth is refused, and
+/// running out of memory gives a problem, never an exception. Every body's derived data is computed (Body::updateDerived),
 /// spring rest lengths and joint anchors/lengths are filled in from the load-time poses.
 SceneLoadResult parseScene(std::string_view jsonText);
 
-/// Reads a scene file; a file that cannot be read is one problem with path "(file)".
+/// Reads a scene file; a file that cannot be read is one problem with path "(file)". Only a
+/// regular file (or a link to one) of at most kMaxSceneFileBytes is read: a device, a pipe, a
+/// socket or a folder is refused before it is opened, so reading never blocks or runs forever.
+/// Running out of memory is a problem too, never an exception.
 SceneLoadResult loadSceneFile(const std::filesystem::path& path);
 
 /// The scene as JSON text (2-space indent, trailing newline), every key written explicitly.

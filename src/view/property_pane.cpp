@@ -1,6 +1,7 @@
 #include "view/property_pane.h"
 
 #include "model/polygon.h"
+#include "model/scene_warnings.h"
 #include "view/view_constants.h"
 
 #include <QAccessible>
@@ -321,6 +322,18 @@ void PropertyPane::buildWorldPage()
     addNumber(Page::World, form, QStringLiteral("drag"), tr("Drag"), tr("N·s/m"), Bound::NonNegative,
               [this] { return m_settings.drag; },
               editWorld([](model::WorldSettings& s, double v) { s.drag = v; }, tr("Change drag")));
+
+    // Legal settings outside what the engine is tested for (issue 17): said where they are set.
+    m_worldWarnings = new QLabel;
+    m_worldWarnings->setObjectName(QStringLiteral("worldWarnings"));
+    m_worldWarnings->setAccessibleName(tr("Warnings"));
+    m_worldWarnings->setWordWrap(true);
+    m_worldWarnings->setTextFormat(Qt::PlainText);
+    QPalette palette = m_worldWarnings->palette();
+    palette.setColor(QPalette::WindowText, kMessageColor);
+    m_worldWarnings->setPalette(palette);
+    m_worldWarnings->hide();
+    form->addRow(m_worldWarnings);
 }
 
 void PropertyPane::buildBodyPage()
@@ -917,6 +930,7 @@ void PropertyPane::load(const model::World& world)
     m_settings = world.settings;
     m_page = Page::World;
     m_index = -1;
+    m_worldWarningText.clear();
     if (const int body = firstValid(m_selection.bodies, world.bodies.size()); body >= 0) {
         m_page = Page::Body;
         m_index = body;
@@ -957,6 +971,12 @@ void PropertyPane::load(const model::World& world)
                 : m_joint.anchorB;
         }
     }
+    if (m_page == Page::World) {
+        QStringList lines;
+        for (const model::SceneProblem& warning : model::sceneWarnings(world))
+            lines << tr("Warning: %1").arg(QString::fromStdString(warning.toString()));
+        m_worldWarningText = lines.join(QLatin1Char('\n'));
+    }
 }
 
 void PropertyPane::display(bool replaceFocused)
@@ -979,6 +999,8 @@ void PropertyPane::display(bool replaceFocused)
     switch (m_page) {
     case Page::World:
         m_title->setText(tr("World"));
+        m_worldWarnings->setText(m_worldWarningText);
+        m_worldWarnings->setVisible(!m_worldWarningText.isEmpty());
         m_integrator->setCurrentIndex(m_integrator->findData(static_cast<int>(m_settings.integrator)));
         break;
     case Page::Body:

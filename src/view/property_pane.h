@@ -180,6 +180,7 @@ private:
     std::vector<Vec2> m_shownVertices; ///< what the vertex table shows
     QString m_softDensityShown; ///< the text last put in the ellipses-per-m² field
     QString m_softGridText; ///< the shown soft body's ellipse count and density, or empty
+    QString m_worldWarningText; ///< settings outside the tested ranges (model::sceneWarnings), or empty
     QLocale m_locale; ///< the user's locale, without group separators
 
     QLabel* m_title = nullptr;
@@ -207,6 +208,7 @@ private:
     QLabel* m_softGrid = nullptr; ///< read-only: what the engine built (the "auto" choice)
     std::array<QCheckBox*, kVectorKindCount> m_bodyVectors{}; ///< "Show vectors", by VectorKind
     std::function<bool(const std::string&, VectorKind)> m_bodyVectorsShown;
+    QLabel* m_worldWarnings = nullptr; ///< world page: why the settings may give wrong results
     NumberField* m_softStiffness = nullptr;
     NumberField* m_softDamping = nullptr;
     QLineEdit* m_springBodyA = nullptr;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 namespace {
@@ -45,6 +46,10 @@ std::string quoted(const std::string& arg)
     return q + "'";
 }
 
+/// How long a run that should end at once may take before it counts as hanging (see
+/// runWithDeadline): far above any real run here, far below "forever".
+constexpr const char* kHangDeadline = "60";
+
 std::string dataFile(const std::string& name) { return std::string(IMPETUS_CLI_DATA_DIR) + "/" + name; }
 
 class Cli : public ::testing::Test {
@@ -61,9 +66,19 @@ protected:
     fs::path tempPath(const std::string& name) const { return m_dir / name; }
 
     /// Runs impetus-cli with `args`, capturing stdout, stderr and the exit code.
-    CliResult run(const std::vector<std::string>& args) const
+    CliResult run(const std::vector<std::string>& args) const { return runCommand(quoted(IMPETUS_CLI_PATH), args); }
+
+    /// Like run(), but a run still going after kHangDeadline is killed (exit code 124): for input
+    /// that used to make the program read or wait forever, so that such a test fails, not hangs.
+    CliResult runWithDeadline(const std::vector<std::string>& args) const
     {
-        std::string command = quoted(IMPETUS_CLI_PATH);
+        return runCommand("timeout " + std::string(kHangDeadline) + " " + quoted(IMPETUS_CLI_PATH), args);
+    }
+
+    /// Runs `program` with `args`, capturing stdout, stderr and the exit code.
+    CliResult runCommand(const std::string& program, const std::vector<std::string>& args) const
+    {
+        std::string command = program;
         for (const std::string& arg : args) {
             command += ' ';
             command += quoted(arg);
@@ -396,3 +411,324 @@ TEST_F(Cli, CompareRigidPrintsTheDeviationOverTime)
 }
 
 } // namespace
+
+// ---- Issue 17, item 4 (F6/F7): unbounded reads ------------------------------------------------
+
+// A device never ends: `validate /dev/zero` used to read until memory ran out. Now what is not a
+// regular file is refused before it is opened, and quickly.
+TEST_F(Cli, ADeviceIsRefusedNotReadForever)
+{
+    for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+        const CliResult r = runWithDeadline({"validate", device});
+        EXPECT_EQ(r.exitCode, 2) << device;
+        EXPECT_NE(r.err.find("(file): cannot open '" + std::string(device) + "': it is a device, not a regular file"),
+                  std::string::npos)
+            << r.err;
+    }
+}
+
+// Opening a pipe blocks until someone writes to it; it used to hang `validate` for good.
+TEST_F(Cli, APipeIsRefusedWithoutWaitingForAWriter)
+{
+    const fs::path fifo = tempPath("scene.json");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const CliResult r = runWithDeadline({"run", fifo.string(), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("it is a pipe (FIFO), not a regular file"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AFolderIsRefused)
+{
+    const CliResult r = runWithDeadline({"validate", tempPath("").string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("it is a directory"), std::string::npos) << r.err;
+}
+
+// A file over the cap is refused from its size alone (a sparse file costs no disk here).
+TEST_F(Cli, AFileLargerThanTheCapIsRefusedWithTheCap)
+{
+    const fs::path huge = tempPath("huge.json");
+    std::ofstream(huge) << "{";
+    fs::resize_file(huge, std::uintmax_t{64} * 1024 * 1024 + 1);
+    const CliResult r = runWithDeadline({"validate", huge.string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("larger than the 64 MiB (67108864 bytes) a scene file may have"), std::string::npos) << r.err;
+}
+
+// Ten million nested arrays used to build a ten-million-level document (1.8 GB); now the parser
+// stops at the nesting limit.
+TEST_F(Cli, DeepNestingIsRefusedAtTheLimit)
+{
+    const fs::path deep = tempPath("deep.json");
+    constexpr std::size_t kDepth = 10'000'000;
+    {
+        std::ofstream out(deep, std::ios::binary);
+        out << std::string(kDepth, '[') << std::string(kDepth, ']');
+    }
+    const CliResult r = runWithDeadline({"validate", deep.string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("nested deeper than 64 levels"), std::string::npos) << r.err;
+}
+
+// ---- Issue 17, item 3 (F3): overflow written as null ------------------------------------------
+
+// A finite state whose energy and momentum overflow (1e200 kg at 1e200 m/s) used to give
+// "kinetic": null with exit 0. It is a failure at run time, named like a non-finite state.
+TEST_F(Cli, OverflowingMomentumIsARuntimeFailureNotNull)
+{
+    const CliResult r = run({"run", dataFile("overflow_momentum.json"), "--steps", "2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'b' has a non-finite kinetic energy at t = 0 s (step 0)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("mass 1e+200 kg, speed 1e+200 m/s"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, OverflowingEnergyIsARuntimeFailureNotNull)
+{
+    const CliResult r = run({"run", dataFile("overflow_energy.json"), "--steps", "2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'b' has a non-finite kinetic energy"), std::string::npos) << r.err;
+}
+
+// A state that is finite when the run starts and overflows the energy during it: the run fails
+// at its end, naming the step, instead of writing null.
+TEST_F(Cli, EnergyThatOverflowsDuringTheRunFailsAtTheEnd)
+{
+    const fs::path scene = tempPath("falls.json");
+    std::ofstream(scene) << R"({"format":"impetus-scene","version":1,"world":{"gravity":[0,-1e300]},
+        "bodies":[{"name":"rock","shape":{"type":"circle","radius":0.5},"position":[0,0]}]})";
+    const CliResult r = run({"run", scene.string(), "--steps", "3", "--dt", "0.01", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("body 'rock' has a non-finite kinetic energy at t = 0.03 s (step 3)"), std::string::npos)
+        << r.err;
+}
+
+// ---- Issue 17, item 6 (F8/F9, timeStep 1.0): settings outside the tested ranges -------------
+
+// bad-cases/F8: g = 1e6 m/s² sent a stack to 1e14 m with exit 0 and not a word. The scene is
+// legal, so it still runs, with the reason on stderr.
+TEST_F(Cli, StrongGravityRunsWithAWarningNamingTheLimit)
+{
+    const CliResult r = run({"run", dataFile("stack_gravity_1e6.json"), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.err.find("impetus-cli run: warning: world.gravity: |g| = 1e+06 m/s² moves a body 17.4 m in one "
+                         "solver step of 4.17 ms"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("keep |g| at most 115 m/s² at this step"), std::string::npos) << r.err;
+}
+
+// bad-cases/F9: a 1e6 kg box on a 1e-6 kg box fell through it.
+TEST_F(Cli, ValidateWarnsAboutTouchingBodiesOfVeryDifferentMass)
+{
+    const CliResult r = run({"validate", dataFile("mass_ratio_1e12.json")});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "ok\n");
+    EXPECT_NE(r.err.find("warning: bodies[1]: 'light' (1e-06 kg) touches 'heavy' (1e+06 kg), a mass ratio of 1e+12"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("warning: bodies[4]: 'light2'"), std::string::npos) << r.err;
+}
+
+// A step longer than the substeps can split (1 s); the warning comes from the flag as well.
+TEST_F(Cli, AStepLongerThanOneSecondIsWarned)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--dt", "5"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.err.find("warning: world.timeStep: a step of 5 s is longer than 1 s"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, TheDefaultSettingsGiveNoWarning)
+{
+    const CliResult r = run({"run", dataFile("collide.json"), "--steps", "1"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+// ---- Issue 17, item 7: CLI surprises ------------------------------------------------------
+
+// --summary into a folder used to fail after the whole run, with no reason. Outputs are now
+// opened before the first step: the run fails at once (10 million steps would take minutes).
+TEST_F(Cli, AnUnwritableSummaryFailsBeforeTheRunWithTheReason)
+{
+    const CliResult r = runWithDeadline({"run", dataFile("projectile.json"), "--steps", "10000000", "--summary",
+                                         tempPath("").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("cannot write the summary file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("it is a directory"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AMissingFolderIsNamedWithItsReason)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--summary",
+                             tempPath("no-such-dir/summary.json").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("cannot write the summary file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+}
+
+// `run scene.json --csv scene.json` overwrote the scene with the CSV.
+TEST_F(Cli, AnOutputOverTheSceneIsRefusedAndTheSceneKept)
+{
+    const fs::path scene = tempPath("scene.json");
+    fs::copy_file(dataFile("projectile.json"), scene);
+    const std::string before = readFile(scene);
+    for (const char* flag : {"--csv", "--summary", "--collision-log"}) {
+        const CliResult r = run({"run", scene.string(), "--steps", "1", flag, (tempPath(".") / "scene.json").string()});
+        EXPECT_EQ(r.exitCode, 2) << flag;
+        EXPECT_NE(r.err.find(std::string(flag) + ": '"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("is the scene file being run; writing there would overwrite it"), std::string::npos)
+            << r.err;
+        EXPECT_EQ(readFile(scene), before) << flag;
+    }
+}
+
+TEST_F(Cli, TwoOutputsOnOneFileAreRefused)
+{
+    const std::string out = tempPath("out.txt").string();
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--csv", out, "--summary", out});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--csv and --summary both write"), std::string::npos) << r.err;
+}
+
+// `--csv -` made a file named "-"; like `--summary -` it means stdout, which then holds the CSV
+// alone (no closing "ran …" line).
+TEST_F(Cli, CsvDashIsStdout)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "2", "--csv", "-"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_FALSE(fs::exists("-"));
+    std::istringstream lines(r.out);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "time,body,x,y,angle,vx,vy,angularVelocity,colliding");
+    int rows = 0;
+    while (std::getline(lines, line)) {
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 3 * 2); // steps 0, 1 and 2, two bodies each
+}
+
+TEST_F(Cli, TwoOutputsOnStdoutAreRefused)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1", "--csv", "-", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--csv - and --summary - both write to stdout"), std::string::npos) << r.err;
+}
+
+// --steps 9223372036854775807 ran for ever while --time refused huge values; --steps 1e20 was
+// "expected a whole number". One limit for both, and "too large" when it is passed.
+
+INSTANTIATE_TEST_SUITE_P(
+    Limits, CliUsage,
+    ::testing::Values(
+        UsageCase{"steps_int64_max", {"run", "SCENE", "--steps", "9223372036854775807"},
+                  "--steps: 9223372036854775807 is too large (at most 1000000000)"},
+        UsageCase{"steps_past_int64", {"run", "SCENE", "--steps", "99999999999999999999"},
+                  "--steps: 99999999999999999999 is too large (at most 1000000000)"},
+        UsageCase{"steps_1e20", {"run", "SCENE", "--steps", "1e20"}, "--steps: 1e20 is too large (at most 1000000000)"},
+        UsageCase{"steps_just_over", {"run", "SCENE", "--steps", "1000000001"}, "--steps: 1000000001 is too large"},
+        UsageCase{"time_too_long", {"run", "SCENE", "--time", "1e20"}, "steps, too large (at most 1000000000 steps)"},
+        UsageCase{"time_just_over", {"run", "SCENE", "--time", "10000000.01", "--dt", "0.01"},
+                  "--time: 10000000.01 s at dt = 0.01 s is 1000000001 steps, too large"},
+        UsageCase{"repeated_flag", {"run", "SCENE", "--steps", "2", "--steps", "3"}, "--steps: given twice"},
+        UsageCase{"repeated_flag_with_equals", {"run", "SCENE", "--csv=a.csv", "--csv", "b.csv"}, "--csv: given twice"},
+        UsageCase{"compare_and_csv_on_stdout", {"run", "SCENE", "--compare-rigid", "ball", "--csv", "-"},
+                  "--compare-rigid and --csv - both write to stdout"}),
+    [](const ::testing::TestParamInfo<UsageCase>& p) { return std::string(p.param.name); });
+
+// A whole number written as a double is taken when it is in range.
+TEST_F(Cli, StepsWrittenAsADoubleAreTakenWhenWhole)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "1e2", "--summary", "-"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["steps"], 100);
+}
+
+// ---- Issue 17, item 8: "auto" soft density in headless runs -------------------------------
+
+/// tests/app/data/soft.json with its jelly `size` m square and "auto" density.
+std::string autoJellyScene(int size)
+{
+    std::string text = readFile(dataFile("soft.json"));
+    const auto replace = [&text](const std::string& from, const std::string& to) {
+        const std::size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos)
+            text.replace(at, from.size(), to);
+    };
+    replace(R"("ellipsesPerSquareMeter": 64)", R"("ellipsesPerSquareMeter": "auto")");
+    const std::string side = std::to_string(size);
+    replace(R"("shape": { "type": "box", "width": 1, "height": 1 }, "position": [0, 2])",
+            R"("shape": { "type": "box", "width": )" + side + R"(, "height": )" + side + R"( }, "position": [0, 3])");
+    return text;
+}
+
+/// The jelly's entry in a summary.
+nlohmann::json jellyOf(const std::string& summary) { return nlohmann::json::parse(summary)["bodies"][1]; }
+
+/// Ellipses × substeps per step of a run, from its summary and its substep note (1 without one).
+long long ellipseSubsteps(const CliResult& r)
+{
+    long long substeps = 1;
+    const std::size_t at = r.err.find("split into ");
+    if (at != std::string::npos)
+        substeps = std::stoll(r.err.substr(at + std::string("split into ").size()));
+    return jellyOf(r.out)["ellipses"].get<long long>() * substeps;
+}
+
+// Under load the timing picked 512 per m² instead of 1024. Headless, "auto" now follows a fixed
+// cost model: the same on every run and machine, and the summary says what chose it.
+TEST_F(Cli, AutoDensityIsTheSameOnEveryRun)
+{
+    const fs::path scene = tempPath("jelly.json");
+    std::ofstream(scene) << autoJellyScene(1);
+    for (int run = 0; run < 3; ++run) {
+        const CliResult r = this->run({"run", scene.string(), "--steps", "0", "--summary", "-"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json jelly = jellyOf(r.out);
+        EXPECT_EQ(jelly["ellipsesPerSquareMeter"], 1024.0);
+        EXPECT_EQ(jelly["densityChosenBy"], "cost model");
+        EXPECT_NE(r.err.find("\"auto\" chose 1024 ellipses per m² by the cost model"), std::string::npos) << r.err;
+    }
+}
+
+// The cost model takes the densest of 64 … 1024 per m² whose ellipses × substeps per step stay
+// within 16384: checked on a 3 m × 3 m jelly against the next density up, run as a fixed one.
+TEST_F(Cli, TheCostModelTakesTheDensestGridWithinItsBudget)
+{
+    constexpr long long kBudget = 16384;
+    const fs::path scene = tempPath("big-jelly.json");
+    std::ofstream(scene) << autoJellyScene(3);
+    const CliResult chosen = run({"run", scene.string(), "--steps", "0", "--summary", "-"});
+    ASSERT_EQ(chosen.exitCode, 0) << chosen.err;
+    const double density = jellyOf(chosen.out)["ellipsesPerSquareMeter"].get<double>();
+    EXPECT_LE(ellipseSubsteps(chosen), kBudget);
+    ASSERT_LT(density, 1024.0);
+    const CliResult denser =
+        run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", std::to_string(static_cast<int>(2 * density))});
+    ASSERT_EQ(denser.exitCode, 0) << denser.err;
+    EXPECT_GT(ellipseSubsteps(denser), kBudget);
+}
+
+TEST_F(Cli, AutoDensityFlagFixesTheDensityOrMeasures)
+{
+    const fs::path scene = tempPath("jelly.json");
+    std::ofstream(scene) << autoJellyScene(1);
+    const CliResult given = run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", "256"});
+    ASSERT_EQ(given.exitCode, 0) << given.err;
+    EXPECT_EQ(jellyOf(given.out)["ellipsesPerSquareMeter"], 256.0);
+    EXPECT_EQ(jellyOf(given.out)["densityChosenBy"], "--auto-density");
+    const CliResult measured = run({"run", scene.string(), "--steps", "0", "--summary", "-", "--auto-density", "measure"});
+    ASSERT_EQ(measured.exitCode, 0) << measured.err;
+    EXPECT_EQ(jellyOf(measured.out)["densityChosenBy"], "measured");
+    const CliResult bad = run({"run", scene.string(), "--auto-density", "lots"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--auto-density: expected 'cost', 'measure' or a number"), std::string::npos) << bad.err;
+    // A density the scene gives is the scene's.
+    const CliResult fixed = run({"run", dataFile("soft.json"), "--steps", "0", "--summary", "-"});
+    EXPECT_EQ(jellyOf(fixed.out)["densityChosenBy"], "scene");
+}

@@ -225,9 +225,18 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         // A manifold that carried load in the last step is resting as a whole: its points share
         // the load unevenly from step to step, and an unloaded corner of a resting box is not
         // struck when the box settles onto it.
+        // A manifold that still approaches faster than a resting one can did not rest: its load
+        // was a speculative contact's, which stopped the bodies at the surface with their approach
+        // left over (a ball whose step ends on the floor while it falls). It is struck as an
+        // impact, or an elastic ball would stop dead (issue 17, F1).
         bool loaded = false;
-        for (int i = 0; i < c.pointCount; ++i)
-            loaded = loaded || c.points[static_cast<std::size_t>(i)].normalImpulse > 0;
+        bool approaching = false;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
+            loaded = loaded || p.normalImpulse > 0;
+            approaching = approaching || p.startNormalVelocity < -constants::kRestingImpactThreshold;
+        }
+        loaded = loaded && !approaching;
         for (int i = 0; i < c.pointCount; ++i)
             c.points[static_cast<std::size_t>(i)].carriesLoad = loaded;
 

@@ -1,0 +1,190 @@
+#include "model/scene_warnings.h"
+
+#include "model/constants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <set>
+#include <utility>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace impetus::model {
+
+namespace {
+
+/// Significant digits of numbers in warnings: enough to recognise a value, short enough to read.
+constexpr int kShownDigits = 3;
+
+/// Milliseconds per second (and millimetres per metre), for steps and lengths shown in ms and mm.
+constexpr Scalar kMillisecondsPerSecond = 1000;
+
+std::string shown(Scalar value)
+{
+    std::ostringstream out;
+    out << std::setprecision(kShownDigits) << value;
+    return out.str();
+}
+
+/// The step the contact solver takes: the time step, split into equal substeps of at most
+/// kMaxSolverStep, and at most kMaxSolverSubsteps of them (controller::Simulation does the same).
+Scalar solverStep(Scalar timeStep)
+{
+    const Scalar wanted = std::ceil(timeStep / constants::kMaxSolverStep);
+    const Scalar substeps = std::clamp(wanted, Scalar(1), Scalar(constants::kMaxSolverSubsteps));
+    return timeStep / substeps;
+}
+
+/// A length as a person reads it: in mm below a metre, in m from a metre up.
+std::string shownLength(Scalar metres)
+{
+    return metres < 1 ? shown(metres * kMillisecondsPerSecond) + " mm" : shown(metres) + " m";
+}
+
+void checkTimeStep(const WorldSettings& settings, std::vector<SceneProblem>& out)
+{
+    const Scalar longest = constants::kMaxSolverSubsteps * constants::kMaxSolverStep;
+    if (!(settings.timeStep > longest))
+        return;
+    out.push_back({"world.timeStep", "a step of " + shown(settings.timeStep) + " s is longer than " + shown(longest) +
+                                         " s: it is split into " + std::to_string(constants::kMaxSolverSubsteps) +
+                                         " substeps of " +
+                                         shown(solverStep(settings.timeStep) * kMillisecondsPerSecond) +
+                                         " ms, longer than the " +
+                                         shown(constants::kMaxSolverStep * kMillisecondsPerSecond) +
+                                         " ms the contact solver is made for; bodies may sink into or fall "
+                                         "through each other"});
+}
+
+void checkGravity(const WorldSettings& settings, std::vector<SceneProblem>& out)
+{
+    const Scalar h = solverStep(settings.timeStep);
+    const Scalar g = std::hypot(settings.gravity.x(), settings.gravity.y());
+    // How far gravity moves a body in one solver step beyond where its velocity takes it. Once it
+    // is more than the margin at which contacts are made ahead of time, resting bodies start each
+    // step already deep in each other, and a stack is pushed apart violently.
+    const Scalar drop = g * h * h;
+    if (!(drop > constants::kSpeculativeMargin))
+        return;
+    const Scalar largest = constants::kSpeculativeMargin / (h * h);
+    out.push_back({"world.gravity", "|g| = " + shown(g) + " m/s² moves a body " + shownLength(drop) + " in one solver step of " + shown(h * kMillisecondsPerSecond) +
+                                        " ms (|g|·h²), more than the " +
+                                        shown(constants::kSpeculativeMargin * kMillisecondsPerSecond) +
+                                        " mm contact margin: resting contacts and stacks may explode; keep |g| "
+                                        "at most " +
+                                        shown(largest) + " m/s² at this step, or make the step smaller"});
+}
+
+/// A pair of dynamic bodies that touch or are joined, and where the pair comes from.
+struct MassPair {
+    std::uint32_t a;
+    std::uint32_t b;
+    std::string path; ///< the spring or joint, or the lighter body for a touching pair
+    bool joined;
+};
+
+/// Pairs of dynamic bodies whose bounding circles overlap (or come within the speculative
+/// margin): a sweep along x over the circles' extents, so a large world costs n·log n plus the
+/// pairs found.
+std::vector<MassPair> touchingPairs(const World& world)
+{
+    std::vector<std::uint32_t> dynamic;
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+        if (!world.bodies[i].fixed)
+            dynamic.push_back(i);
+    }
+    const auto minX = [&world](std::uint32_t i) {
+        return world.bodies[i].state.position.x() - world.bodies[i].geometry.boundingRadius;
+    };
+    std::sort(dynamic.begin(), dynamic.end(), [&](std::uint32_t l, std::uint32_t r) { return minX(l) < minX(r); });
+    std::vector<MassPair> pairs;
+    for (std::size_t k = 0; k < dynamic.size(); ++k) {
+        const Body& first = world.bodies[dynamic[k]];
+        const Scalar reach = first.state.position.x() + first.geometry.boundingRadius + constants::kSpeculativeMargin;
+        for (std::size_t m = k + 1; m < dynamic.size() && minX(dynamic[m]) <= reach; ++m) {
+            const Body& second = world.bodies[dynamic[m]];
+            const Vec2 gap = second.state.position - first.state.position;
+            const Scalar distance = std::hypot(gap.x(), gap.y());
+            if (distance <= first.geometry.boundingRadius + second.geometry.boundingRadius + constants::kSpeculativeMargin) {
+                const std::uint32_t lighter = first.mass <= second.mass ? dynamic[k] : dynamic[m];
+                pairs.push_back({dynamic[k], dynamic[m], "bodies[" + std::to_string(lighter) + "]", false});
+            }
+        }
+    }
+    return pairs;
+}
+
+std::vector<MassPair> joinedPairs(const World& world)
+{
+    std::vector<MassPair> pairs;
+    const auto add = [&](BodyId a, const std::optional<BodyId>& b, const std::string& path) {
+        if (b && a.index < world.bodies.size() && b->index < world.bodies.size() && !world.body(a).fixed &&
+            !world.body(*b).fixed)
+            pairs.push_back({a.index, b->index, path, true});
+    };
+    for (std::size_t i = 0; i < world.springs.size(); ++i)
+        add(world.springs[i].bodyA, world.springs[i].bodyB, "springs[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < world.joints.size(); ++i)
+        add(world.joints[i].bodyA, world.joints[i].bodyB, "joints[" + std::to_string(i) + "]");
+    return pairs;
+}
+
+void checkMassRatios(const World& world, std::vector<SceneProblem>& out)
+{
+    std::vector<MassPair> pairs = joinedPairs(world);
+    // A joined pair that also touches is named once, by its link.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> joined;
+    for (const MassPair& pair : pairs)
+        joined.insert(std::minmax(pair.a, pair.b));
+    for (const MassPair& pair : touchingPairs(world)) {
+        if (!joined.contains(std::minmax(pair.a, pair.b)))
+            pairs.push_back(pair);
+    }
+    int reported = 0;
+    int more = 0;
+    for (const MassPair& pair : pairs) {
+        const Body& a = world.bodies[pair.a];
+        const Body& b = world.bodies[pair.b];
+        const Body& heavy = a.mass >= b.mass ? a : b;
+        const Body& light = a.mass >= b.mass ? b : a;
+        const Scalar ratio = heavy.mass / light.mass;
+        if (!(ratio > constants::kMaxContactMassRatio))
+            continue;
+        if (reported == constants::kMaxMassRatioWarnings) {
+            ++more;
+            continue;
+        }
+        ++reported;
+        const std::string ratioText = ", a mass ratio of " + shown(ratio) + ", above the " +
+                                      shown(constants::kMaxContactMassRatio) + " the solver is tested for: ";
+        if (pair.joined) {
+            out.push_back({pair.path, "joins '" + heavy.name + "' (" + shown(heavy.mass) + " kg) to '" + light.name +
+                                          "' (" + shown(light.mass) + " kg)" + ratioText +
+                                          "the light body may jitter and the link stretch"});
+        } else {
+            out.push_back({pair.path, "'" + light.name + "' (" + shown(light.mass) + " kg) touches '" + heavy.name +
+                                          "' (" + shown(heavy.mass) + " kg)" + ratioText +
+                                          "the heavy body can push the light one into or through what it rests on"});
+        }
+    }
+    if (more > 0) {
+        out.push_back({"bodies", "and " + std::to_string(more) + " more pairs of bodies with a mass ratio above " +
+                                     shown(constants::kMaxContactMassRatio)});
+    }
+}
+
+} // namespace
+
+std::vector<SceneProblem> sceneWarnings(const World& world)
+{
+    std::vector<SceneProblem> warnings;
+    checkTimeStep(world.settings, warnings);
+    checkGravity(world.settings, warnings);
+    checkMassRatios(world, warnings);
+    return warnings;
+}
+
+} // namespace impetus::model

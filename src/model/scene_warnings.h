@@ -1,0 +1,25 @@
+#pragma once
+/// \file scene_warnings.h
+/// Settings that are legal but outside what the engine is tested for: a scene with them loads and
+/// runs, but its results may be wrong (a stack explodes, a heavy body pushes a light one through
+/// the ground). The CLI prints them on stderr, the attribute pane shows them on its world page.
+/// docs/scene-format.md, "Ranges the engine is tested for".
+
+#include "model/scene_io.h"
+#include "model/world.h"
+
+#include <vector>
+
+namespace impetus::model {
+
+/// Every warning for `world`, each as a path and a reason like a scene problem:
+/// - `world.timeStep` longer than the solver's substeps can split (kMaxSolverSubsteps ×
+///   kMaxSolverStep, 1 s);
+/// - `world.gravity` so strong that a body falls further than the speculative contact margin in
+///   one solver step: |g|·h² > kSpeculativeMargin, with h the solver step (the time step, split
+///   into substeps of at most kMaxSolverStep);
+/// - two dynamic bodies whose masses differ more than kMaxContactMassRatio times and that are
+///   joined by a spring or joint, or touch at load time (their bounding circles overlap).
+std::vector<SceneProblem> sceneWarnings(const World& world);
+
+} // namespace impetus::model

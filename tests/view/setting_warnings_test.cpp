@@ -1,0 +1,107 @@
+// The attribute pane's world page warns about settings outside the ranges the engine is tested
+// for (issue 17, item 6): opened from a file and typed by hand, in the real window.
+
+#include "test_settings.h"
+#include "view/main_window.h"
+#include "view/property_pane.h"
+
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTemporaryDir>
+#include <QTest>
+
+using impetus::view::MainWindow;
+using impetus::view::PropertyPane;
+
+namespace {
+
+/// bad-cases/F9_mass_ratio_1e12.json: a 1e6 kg box resting on a 1e-6 kg box on the floor.
+constexpr const char* kMassRatioScene =
+    R"({"format": "impetus-scene", "version": 1, "bodies": [)"
+    R"({"name": "floor", "shape": {"type": "box", "width": 20, "height": 1}, "position": [0, -0.5], "fixed": true},)"
+    R"({"name": "light", "shape": {"type": "box", "width": 1, "height": 1}, "position": [-3, 0.5], "mass": 1e-06},)"
+    R"({"name": "heavy", "shape": {"type": "box", "width": 1, "height": 1}, "position": [-3, 1.5], "mass": 1000000.0}]})";
+
+/// A box on the floor under the default settings: nothing to warn about.
+constexpr const char* kPlainScene =
+    R"({"format": "impetus-scene", "version": 1, "bodies": [)"
+    R"({"name": "floor", "shape": {"type": "box", "width": 20, "height": 1}, "position": [0, -0.5], "fixed": true},)"
+    R"({"name": "box", "shape": {"type": "box", "width": 1, "height": 1}, "position": [0, 0.5]}]})";
+
+void typeAndEnter(QLineEdit* edit, const QString& text)
+{
+    edit->setFocus();
+    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClick(edit, Qt::Key_Backspace);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+}
+
+} // namespace
+
+class SettingWarningsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void massRatioOfTouchingBodiesIsWarnedOnTheWorldPage();
+    void gravityTypedOutOfRangeShowsAWarningUntilItIsBack();
+
+private:
+    /// Writes `text` to a file in m_dir and opens it in `window`; false when it did not open.
+    bool open(MainWindow& window, const char* text)
+    {
+        const QString path = m_dir.filePath(QStringLiteral("scene.json"));
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(text) < 0)
+            return false;
+        file.close();
+        return window.openScene(path).isEmpty();
+    }
+
+    impetus::view::test::TemporarySettings m_settings;
+    QTemporaryDir m_dir;
+};
+
+void SettingWarningsTest::massRatioOfTouchingBodiesIsWarnedOnTheWorldPage()
+{
+    MainWindow window;
+    QVERIFY(open(window, kMassRatioScene));
+    window.show();
+    auto* pane = window.findChild<PropertyPane*>();
+    QVERIFY(pane);
+    auto* warnings = pane->findChild<QLabel*>(QStringLiteral("worldWarnings"));
+    QVERIFY(warnings);
+    QVERIFY(warnings->isVisible());
+    QVERIFY2(warnings->text().startsWith(QStringLiteral("Warning: bodies[1]: 'light' (1e-06 kg) touches 'heavy' "
+                                                        "(1e+06 kg), a mass ratio of 1e+12")),
+             qPrintable(warnings->text()));
+}
+
+void SettingWarningsTest::gravityTypedOutOfRangeShowsAWarningUntilItIsBack()
+{
+    MainWindow window;
+    QVERIFY(open(window, kPlainScene));
+    window.show();
+    auto* pane = window.findChild<PropertyPane*>();
+    QVERIFY(pane);
+    auto* warnings = pane->findChild<QLabel*>(QStringLiteral("worldWarnings"));
+    QVERIFY(warnings);
+    QVERIFY(!warnings->isVisible());
+
+    // bad-cases/F8: g = 1e6 m/s² sent a stack of boxes 1e14 m away, with no word of why.
+    auto* gravityY = pane->findChild<QLineEdit*>(QStringLiteral("gravityY"));
+    QVERIFY(gravityY);
+    typeAndEnter(gravityY, QStringLiteral("-1000000"));
+    QTRY_VERIFY(warnings->isVisible());
+    QVERIFY2(warnings->text().startsWith(QStringLiteral("Warning: world.gravity: |g| = 1e+06 m/s² moves a body")),
+             qPrintable(warnings->text()));
+    QVERIFY2(warnings->text().contains(QStringLiteral("keep |g| at most 115 m/s² at this step")),
+             qPrintable(warnings->text()));
+
+    typeAndEnter(gravityY, QStringLiteral("-9.81"));
+    QTRY_VERIFY(!warnings->isVisible());
+}
+
+QTEST_MAIN(SettingWarningsTest)
+#include "setting_warnings_test.moc"
