@@ -58,6 +58,7 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
     const BodyDerivative& da = derivatives[c.bodyA];
     const BodyDerivative& db = derivatives[c.bodyB];
     bool loaded = false;
+    bool approaching = false;
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
         ContactConstraintPoint& p = c.points[i];
         // A circle's surface point is the one on the line of contact, whichever way it has rolled.
@@ -74,8 +75,12 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
         p.normalImpulse = record.normalImpulses[i];
         p.tangentImpulse = record.tangentImpulses[i];
         loaded = loaded || p.normalImpulse > 0;
+        approaching = approaching || p.startNormalVelocity < -constants::kRestingImpactThreshold;
     }
-    // As in prepare(): a contact that carried load in the last substep is resting as a whole.
+    // As in prepare(): a contact that carried load in the last substep is resting as a whole,
+    // unless it still approaches faster than a resting contact can (its load was a speculative
+    // contact's, which left the approach over; issue 17, F1).
+    loaded = loaded && !approaching;
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i)
         c.points[i].carriesLoad = loaded;
 
