@@ -1,5 +1,6 @@
 #include "model/scene_io.h"
 
+#include "model/lesson_io.h"
 #include "model/polygon.h"
 
 #include <nlohmann/json.hpp>
@@ -465,7 +466,8 @@ enum class Bound {
     UnitInterval, ///< 0 … 1
 };
 
-constexpr std::array<std::string_view, 6> kRootKeys = {"format", "version", "world", "bodies", "springs", "joints"};
+constexpr std::array<std::string_view, 7> kRootKeys = {"format",  "version", "world", "bodies",
+                                                       "springs", "joints",  "lesson"};
 constexpr std::array<std::string_view, 4> kWorldKeys = {"gravity", "integrator", "timeStep", "drag"};
 constexpr std::array<std::string_view, 13> kBodyKeys = {
     "name",    "shape",       "position", "angle", "velocity", "angularVelocity", "density",
@@ -518,6 +520,8 @@ public:
             readSprings(*springs, "springs", world);
         if (const Json* joints = find(root, "joints"))
             readJoints(*joints, "joints", world);
+        if (const Json* lesson = find(root, "lesson"))
+            world.lesson = readLesson(*lesson, "lesson", world, m_problems);
 
         if (!m_problems.empty())
             return std::nullopt;
@@ -1225,6 +1229,8 @@ OrderedJson sceneJson(const World& world)
     for (const Joint& joint : world.joints)
         joints.push_back(jointJson(world, joint));
     out["joints"] = std::move(joints);
+    if (world.lesson)
+        out["lesson"] = lessonJson(*world.lesson, world);
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include "model/body.h"
 #include "model/constants.h"
 #include "model/joint.h"
+#include "model/lesson.h"
 #include "model/scalar.h"
 #include "model/soft_grid.h"
 #include "model/spring.h"
@@ -64,6 +65,9 @@ struct World {
     std::vector<Body> bodies; ///< in scene order; BodyId indexes them
     std::vector<Spring> springs; ///< in scene order
     std::vector<Joint> joints; ///< in scene order
+    /// The scene's lesson (scene key `lesson`), if it is an exercise: what students may change and
+    /// the questions. The engine ignores it.
+    std::optional<Lesson> lesson;
     Scalar time = 0; ///< simulated time since the scene was loaded, s
     std::int64_t stepCount = 0; ///< fixed steps taken since the scene was loaded
     std::int64_t collisionCount = 0; ///< contact-begin events since the scene was loaded

@@ -110,6 +110,7 @@ RemoveCommand::RemoveCommand(SceneDocument& document, const Selection& selection
     , m_document(document)
 {
     const model::World& world = document.world();
+    m_lessonBefore = world.lesson;
     std::vector<bool> removedBody(world.bodies.size(), false);
     for (const int i : selection.bodies)
         removedBody[static_cast<std::size_t>(i)] = true;
@@ -136,6 +137,12 @@ void RemoveCommand::redo()
             return std::ranges::any_of(m_bodies, [&](const auto& body) { return body.first == index; });
         };
         forgetContactsOf(world, removed);
+        if (world.lesson) {
+            std::vector<bool> flags(world.bodies.size(), false);
+            for (const auto& body : m_bodies)
+                flags[body.first] = true;
+            world.lesson->removeBodies(flags);
+        }
         eraseAt(world.springs, m_springs);
         eraseAt(world.joints, m_joints);
         eraseAt(world.bodies, m_bodies);
@@ -166,6 +173,7 @@ void RemoveCommand::undo()
         insertAt(world.bodies, m_bodies);
         insertAt(world.springs, m_springs);
         insertAt(world.joints, m_joints);
+        world.lesson = m_lessonBefore;
         // The bodies that come back have no contacts (they may be elsewhere by the next step).
         markColliding(world);
     });

@@ -165,6 +165,7 @@ private:
     std::vector<std::pair<std::size_t, model::Body>> m_bodies; ///< ascending index
     std::vector<std::pair<std::size_t, model::Spring>> m_springs; ///< ascending index
     std::vector<std::pair<std::size_t, model::Joint>> m_joints; ///< ascending index
+    std::optional<model::Lesson> m_lessonBefore; ///< the lesson, whose entries of removed bodies go
 };
 
 /// Sets the position and angle of some bodies. Merges with the next SetPosesCommand of the same

@@ -464,5 +464,193 @@ TEST(SpringChainExample, ChainSettlesAtTheStaticStretches)
     }
 }
 
+// ---- Lessons: each stored answer against the engine and against the textbook -------------------
+//
+// The three lessons (docs/examples.md, "Lessons") store the answers to their questions. Each one is
+// measured here in the engine as a student would measure it in the app, and worked out from the
+// textbook formula with the scene's own numbers; the question must accept both.
+
+/// The lesson of `world`; throws (failing the test) when the scene has none.
+const model::Lesson& lessonOf(const model::World& world)
+{
+    if (!world.lesson)
+        throw std::runtime_error("the scene has no lesson");
+    return *world.lesson;
+}
+
+/// Expects question `index` of `lesson` to accept both the engine's `measured` value and the
+/// textbook's `formula`.
+void expectAnswerMatches(const model::Lesson& lesson, std::size_t index, Scalar measured, Scalar formula)
+{
+    ASSERT_LT(index, lesson.questions.size());
+    const model::LessonQuestion& question = lesson.questions[index];
+    EXPECT_TRUE(question.accepts(measured)) << question.prompt << "\n  engine " << measured << ", stored answer "
+                                            << question.answer << " ± " << question.tolerance;
+    EXPECT_TRUE(question.accepts(formula)) << question.prompt << "\n  textbook " << formula << ", stored answer "
+                                           << question.answer << " ± " << question.tolerance;
+}
+
+/// The incline lesson's board and block turned together by `turn` (rad) about the mean of their
+/// centres, as the Rotate tool turns the two when both are selected.
+model::World turnedTogether(model::World world, std::size_t board, std::size_t block, Scalar turn)
+{
+    const Vec2 pivot = (world.bodies[board].state.position + world.bodies[block].state.position) / 2;
+    for (const std::size_t i : {board, block}) {
+        model::BodyState& state = world.bodies[i].state;
+        state.position = pivot + rotate(Vec2(state.position - pivot), turn);
+        state.angle += turn;
+    }
+    return world;
+}
+
+/// True when the block, left alone for 1.5 s on the board turned to `angle`, has moved more than
+/// a centimetre: it slides.
+bool blockSlides(const model::World& start, std::size_t board, std::size_t block, Scalar angle)
+{
+    model::World world = turnedTogether(start, board, block, angle - start.bodies[board].state.angle);
+    const Vec2 before = world.bodies[block].state.position;
+    controller::Simulation simulation;
+    run(simulation, world, 1.5);
+    return (world.bodies[block].state.position - before).norm() > 0.01;
+}
+
+TEST(InclineLesson, StoredAnswersMatchTheEngineAndTanThetaEqualsMu)
+{
+    const model::World start = loadExample("lesson-incline-friction.json");
+    const model::Lesson& lesson = lessonOf(start);
+    ASSERT_EQ(lesson.questions.size(), 2u);
+    const std::size_t board = indexOf(start, "board");
+    const std::size_t block = indexOf(start, "block");
+    // The student turns the board and the block: the lesson leaves those two free, and no more.
+    for (const std::size_t i : {board, block}) {
+        EXPECT_TRUE(lesson.allows(model::BodyId{static_cast<std::uint32_t>(i)}, model::BodyAttribute::Angle));
+        EXPECT_TRUE(lesson.allows(model::BodyId{static_cast<std::uint32_t>(i)}, model::BodyAttribute::Position));
+        EXPECT_FALSE(lesson.allows(model::BodyId{static_cast<std::uint32_t>(i)}, model::BodyAttribute::Friction));
+    }
+    const Scalar mu = start.bodies[block].material.friction;
+    ASSERT_EQ(start.bodies[board].material.friction, mu); // one material: the contact's μ is μ
+    constexpr Scalar kDegree = std::numbers::pi / 180;
+
+    // Question 1: the angle at which the block starts to slide, found by bisection in the engine.
+    Scalar holds = start.bodies[board].state.angle;
+    Scalar slides = 45 * kDegree;
+    ASSERT_FALSE(blockSlides(start, board, block, holds)) << "the block must rest at the start";
+    ASSERT_TRUE(blockSlides(start, board, block, slides));
+    while (slides - holds > 0.01 * kDegree) {
+        const Scalar middle = (holds + slides) / 2;
+        (blockSlides(start, board, block, middle) ? slides : holds) = middle;
+    }
+    const Scalar critical = (holds + slides) / 2 / kDegree;
+    expectAnswerMatches(lesson, 0, critical, std::atan(mu) / kDegree);
+
+    // Question 2: the acceleration along the board at 40°, a = g(sin θ − μ cos θ).
+    const Scalar steep = 40 * kDegree;
+    model::World world = turnedTogether(start, board, block, steep - start.bodies[board].state.angle);
+    const Vec2 downSlope(-std::cos(steep), -std::sin(steep));
+    controller::Simulation simulation;
+    run(simulation, world, 0.25);
+    const Scalar t1 = world.time;
+    const Scalar v1 = world.bodies[block].state.velocity.dot(downSlope);
+    run(simulation, world, 0.5);
+    const Scalar measured = (world.bodies[block].state.velocity.dot(downSlope) - v1) / (world.time - t1);
+    const Scalar g = -start.settings.gravity.y();
+    expectAnswerMatches(lesson, 1, measured, g * (std::sin(steep) - mu * std::cos(steep)));
+}
+
+TEST(CartCrashLesson, StoredAnswersMatchTheEngineAndMomentumIsKept)
+{
+    const model::World start = loadExample("lesson-cart-crash.json");
+    const model::Lesson& lesson = lessonOf(start);
+    ASSERT_EQ(lesson.questions.size(), 4u);
+    const std::size_t red = indexOf(start, "red cart");
+    const std::size_t blue = indexOf(start, "blue cart");
+    const Scalar m1 = start.bodies[red].mass;
+    const Scalar m2 = start.bodies[blue].mass;
+    const Scalar v1 = start.bodies[red].state.velocity.x();
+    const Scalar v2 = start.bodies[blue].state.velocity.x();
+    const Scalar momentum = m1 * v1 + m2 * v2;
+
+    // Question 1: the total momentum before the crash, as the status bar shows it.
+    expectAnswerMatches(lesson, 0, controller::linearMomentum(start).x(), momentum);
+
+    // Questions 2 and 3: with e = 0 the carts move on together, and kinetic energy is lost.
+    ASSERT_EQ(start.bodies[red].material.restitution, 0);
+    model::World world = start;
+    controller::Simulation simulation;
+    run(simulation, world, 3.0);
+    ASSERT_GE(world.collisionCount, 1);
+    const Scalar together = momentum / (m1 + m2);
+    expectAnswerMatches(lesson, 1, world.bodies[red].state.velocity.x(), together);
+    expectAnswerMatches(lesson, 1, world.bodies[blue].state.velocity.x(), together);
+    const Scalar lost = controller::computeEnergy(start).kinetic - controller::computeEnergy(world).kinetic;
+    expectAnswerMatches(lesson, 2, lost, (m1 * v1 * v1 + m2 * v2 * v2 - (m1 + m2) * together * together) / 2);
+    EXPECT_NEAR(controller::linearMomentum(world).x(), momentum, 1e-9);
+
+    // Question 4: restitution 1 on both carts (which the lesson lets students change).
+    EXPECT_TRUE(lesson.allows(model::BodyId{static_cast<std::uint32_t>(red)}, model::BodyAttribute::Restitution));
+    EXPECT_TRUE(lesson.allows(model::BodyId{static_cast<std::uint32_t>(blue)}, model::BodyAttribute::Restitution));
+    model::World elastic = start;
+    elastic.bodies[red].material.restitution = 1;
+    elastic.bodies[blue].material.restitution = 1;
+    controller::Simulation elasticSimulation;
+    run(elasticSimulation, elastic, 3.0);
+    expectAnswerMatches(lesson, 3, elastic.bodies[blue].state.velocity.x(), ((m2 - m1) * v2 + 2 * m1 * v1) / (m1 + m2));
+    EXPECT_NEAR(controller::linearMomentum(elastic).x(), momentum, 1e-9);
+}
+
+TEST(PendulumLesson, StoredPeriodsMatchTheEngineAndTheLargeAmplitudeFormula)
+{
+    const model::World start = loadExample("lesson-pendulum-length.json");
+    const model::Lesson& lesson = lessonOf(start);
+    ASSERT_EQ(lesson.questions.size(), 4u);
+    EXPECT_TRUE(lesson.allows(model::WorldAttribute::Gravity));
+    // Length, amplitude and pivot of the pendulum whose bob is `name`, from the scene.
+    struct Pendulum {
+        std::size_t bob;
+        Vec2 pivot;
+        Scalar length;
+        Scalar amplitude;
+    };
+    const auto pendulum = [&start](std::string_view name) {
+        Pendulum p{indexOf(start, name), Vec2::Zero(), 0, 0};
+        const auto rod = std::find_if(start.joints.begin(), start.joints.end(),
+                                      [&](const model::Joint& j) { return j.bodyA.index == p.bob; });
+        if (rod == start.joints.end() || rod->bodyB || rod->anchorA != Vec2::Zero())
+            throw std::runtime_error("each bob hangs by its centre on a rod to the world");
+        p.pivot = rod->anchorB;
+        const Vec2 arm = start.bodies[p.bob].state.position - p.pivot;
+        p.length = arm.norm();
+        p.amplitude = std::atan2(arm.x(), -arm.y());
+        return p;
+    };
+    const Pendulum longest = pendulum("long bob");
+    const Pendulum shortest = pendulum("short bob");
+    const auto measure = [](model::World world, const Pendulum& p) {
+        controller::Simulation simulation;
+        const Scalar g = -world.settings.gravity.y();
+        const Scalar seconds = 4.5 * testing::pendulumPeriod(p.length, g, p.amplitude);
+        return periodOfUpwardCrossings(simulation, world, seconds, [&p](const model::World& w) {
+            return w.bodies[p.bob].state.position.x() - p.pivot.x();
+        });
+    };
+    const Scalar g = -start.settings.gravity.y();
+    const Scalar tLong = measure(start, longest);
+    const Scalar tShort = measure(start, shortest);
+    const Scalar formulaLong = testing::pendulumPeriod(longest.length, g, longest.amplitude);
+    const Scalar formulaShort = testing::pendulumPeriod(shortest.length, g, shortest.amplitude);
+    expectAnswerMatches(lesson, 0, tLong, formulaLong);
+    expectAnswerMatches(lesson, 1, tShort, formulaShort);
+    expectAnswerMatches(lesson, 2, tLong / tShort, formulaLong / formulaShort);
+    // The small-angle period would be wrong here: the answer needs the finite-amplitude correction.
+    EXPECT_FALSE(lesson.questions[0].accepts(2 * std::numbers::pi * std::sqrt(longest.length / g)));
+
+    // Question 4: on the Moon.
+    constexpr Scalar kMoonGravity = 1.62;
+    model::World moon = start;
+    moon.settings.gravity = Vec2(0, -kMoonGravity);
+    expectAnswerMatches(lesson, 3, measure(moon, longest),
+                        testing::pendulumPeriod(longest.length, kMoonGravity, longest.amplitude));
+}
+
 } // namespace
 } // namespace impetus

@@ -1,0 +1,135 @@
+#pragma once
+/// \file lesson.h
+/// A lesson: what a teacher adds to a scene to make it an exercise (scene key `lesson`, an
+/// addition to the contract described in docs/scene-format.md). It names the few things students
+/// may change, and every other attribute of the scene is locked; it asks questions with numeric
+/// answers that the app checks. The engine ignores it: it changes nothing in how the scene moves.
+
+#include "model/body.h"
+#include "model/scalar.h"
+
+#include <array>
+#include <bitset>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impetus::model {
+
+struct WorldSettings;
+
+/// What of a body a lesson may leave editable. Each is one or more scene keys of the body.
+enum class BodyAttribute {
+    Name, ///< "name"
+    ShapeSize, ///< "shape": its sizes or vertices (its type stays)
+    Position, ///< "position": also moving it on the canvas
+    Angle, ///< "angle": also turning it on the canvas
+    Velocity, ///< "velocity"
+    AngularVelocity, ///< "angularVelocity"
+    Mass, ///< "mass": the mass or the density, and which of the two is given
+    Restitution, ///< "restitution"
+    Friction, ///< "friction"
+    Fixed, ///< "fixed"
+    FillColor, ///< "color"
+    Soft, ///< "soft": soft mode on or off and its settings
+};
+
+/// The number of BodyAttribute values.
+inline constexpr std::size_t kBodyAttributeCount = 12;
+
+/// Every BodyAttribute, in the order the scene format lists a body's keys.
+inline constexpr std::array<BodyAttribute, kBodyAttributeCount> kBodyAttributes = {
+    BodyAttribute::Name,        BodyAttribute::ShapeSize,       BodyAttribute::Position, BodyAttribute::Angle,
+    BodyAttribute::Velocity,    BodyAttribute::AngularVelocity, BodyAttribute::Mass, BodyAttribute::Restitution,
+    BodyAttribute::Friction,    BodyAttribute::Fixed,       BodyAttribute::FillColor,    BodyAttribute::Soft};
+
+/// What of the world settings a lesson may leave editable (keys of the scene's `world`).
+enum class WorldAttribute {
+    Gravity, ///< "gravity"
+    Integrator, ///< "integrator"
+    TimeStep, ///< "timeStep"
+    Drag, ///< "drag"
+};
+
+/// The number of WorldAttribute values.
+inline constexpr std::size_t kWorldAttributeCount = 4;
+
+/// Every WorldAttribute, in the order of the scene's `world` keys.
+inline constexpr std::array<WorldAttribute, kWorldAttributeCount> kWorldAttributes = {
+    WorldAttribute::Gravity, WorldAttribute::Integrator, WorldAttribute::TimeStep, WorldAttribute::Drag};
+
+/// A set of body attributes, indexed by BodyAttribute.
+using BodyAttributes = std::bitset<kBodyAttributeCount>;
+
+/// A set of world attributes, indexed by WorldAttribute.
+using WorldAttributes = std::bitset<kWorldAttributeCount>;
+
+/// The scene-file name of a body attribute ("friction", "angularVelocity", …).
+std::string_view attributeName(BodyAttribute attribute);
+/// The scene-file name of a world attribute ("gravity", "timeStep", …).
+std::string_view attributeName(WorldAttribute attribute);
+/// Parses a body attribute's scene-file name; nullopt when unknown.
+std::optional<BodyAttribute> bodyAttributeFromName(std::string_view name);
+/// Parses a world attribute's scene-file name; nullopt when unknown.
+std::optional<WorldAttribute> worldAttributeFromName(std::string_view name);
+
+/// A body students may change, and which of its attributes.
+struct EditableBody {
+    BodyId body; ///< the body
+    BodyAttributes attributes; ///< what of it students may change; never empty in a Lesson
+    bool operator==(const EditableBody&) const = default; ///< memberwise equality
+};
+
+/// A question with a numeric answer: right when the student's value v satisfies
+/// |v − answer| ≤ tolerance, in `unit`.
+struct LessonQuestion {
+    std::string prompt; ///< the question, e.g. "At what angle does the block start to slide?"
+    Scalar answer = 0; ///< the right value, in `unit`
+    std::string unit; ///< the unit of the answer, e.g. "°", "s", "kg·m/s"; empty for a pure number
+    Scalar tolerance = 0; ///< the largest accepted |v − answer|, in `unit`, > 0
+    bool operator==(const LessonQuestion&) const = default; ///< memberwise equality
+
+    /// True when `value` (in `unit`) is within the tolerance of the answer.
+    bool accepts(Scalar value) const;
+};
+
+/// A scene's lesson (scene key `lesson`). Everything a lesson does not list as editable is locked
+/// for students: in the app, locked attributes cannot be changed, and locked bodies cannot be
+/// moved, turned or deleted. A teacher lifts the locks to author the lesson.
+struct Lesson {
+    std::string title; ///< shown at the top of the lesson panel; non-empty
+    std::string instructions; ///< plain text or simple Markdown, shown under the title
+    /// The bodies students may change, sorted by body index, at most one entry per body, none
+    /// with an empty attribute set.
+    std::vector<EditableBody> editableBodies;
+    WorldAttributes editableWorld; ///< the world settings students may change
+    std::vector<LessonQuestion> questions; ///< in the order they are asked
+    bool operator==(const Lesson&) const = default; ///< memberwise equality
+
+    /// The attributes of body `body` that students may change (empty: the body is locked).
+    BodyAttributes editable(BodyId body) const;
+    /// True when students may change `attribute` of body `body`.
+    bool allows(BodyId body, BodyAttribute attribute) const;
+    /// True when students may change the world setting `attribute`.
+    bool allows(WorldAttribute attribute) const;
+    /// Makes `attributes` exactly what students may change of body `body`; an empty set locks it
+    /// entirely. Keeps editableBodies sorted and free of empty entries.
+    void setEditable(BodyId body, BodyAttributes attributes);
+
+    /// Follows a removal of bodies: drops the entries of bodies for which `removed[index]` is
+    /// true and renumbers the others as the bodies that stay close up. `removed` has one flag per
+    /// body of the world before the removal.
+    void removeBodies(const std::vector<bool>& removed);
+};
+
+/// The attributes in which `after` differs from `before`: what an edit of a body changes.
+/// Derived fields and the collision state are not attributes; a change of the mass mode (mass or
+/// density given) counts as Mass.
+BodyAttributes changedAttributes(const Body& before, const Body& after);
+
+/// The world settings in which `after` differs from `before`.
+WorldAttributes changedAttributes(const WorldSettings& before, const WorldSettings& after);
+
+} // namespace impetus::model

@@ -1,0 +1,286 @@
+// A scene's `lesson` block (docs/scene-format.md, "Lessons"): read, refused with the JSON path of
+// each problem, written back whole; and the Lesson type's own rules.
+
+#include "model/lesson.h"
+#include "model/scene_io.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace impetus::model {
+namespace {
+
+/// A scene with a fixed floor and a ball, and `lesson` (JSON text) as its lesson, if not empty.
+std::string sceneWithLesson(const std::string& lesson)
+{
+    std::string text = R"({"format":"impetus-scene","version":1,"bodies":[)"
+                       R"({"name":"floor","shape":{"type":"box","width":4,"height":0.2},"position":[0,0],"fixed":true},)"
+                       R"({"name":"ball","shape":{"type":"circle","radius":0.2},"position":[0,1]}])";
+    if (!lesson.empty())
+        text += R"(,"lesson":)" + lesson;
+    return text + "}";
+}
+
+std::string describe(const std::vector<SceneProblem>& problems)
+{
+    std::string out;
+    for (const SceneProblem& problem : problems)
+        out += "\n  " + problem.toString();
+    return out;
+}
+
+/// True when one of `problems` is at `path` and its reason contains `words`.
+bool hasProblem(const std::vector<SceneProblem>& problems, const std::string& path, const std::string& words)
+{
+    for (const SceneProblem& problem : problems) {
+        if (problem.path == path && problem.reason.find(words) != std::string::npos)
+            return true;
+    }
+    return false;
+}
+
+constexpr const char* kFullLesson = R"({
+  "title": "Roll the ball",
+  "instructions": "Push it **gently**.",
+  "editable": [{"body": "ball", "attributes": ["velocity", "friction"]}],
+  "editableWorld": ["gravity"],
+  "questions": [{"prompt": "How far does it roll?", "answer": 1.5, "unit": "m", "tolerance": 0.1},
+                {"prompt": "A pure number?", "answer": -2, "tolerance": 0.5}]
+})";
+
+TEST(LessonReading, ASceneWithoutALessonHasNone)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(""));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    EXPECT_FALSE(result.world->lesson.has_value());
+    // And writing it adds no lesson key: a scene without a lesson is unchanged by this addition.
+    EXPECT_EQ(serializeScene(*result.world).find("\"lesson\""), std::string::npos);
+}
+
+TEST(LessonReading, ReadsEveryPart)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    ASSERT_TRUE(result.world->lesson.has_value());
+    const Lesson& lesson = *result.world->lesson;
+    EXPECT_EQ(lesson.title, "Roll the ball");
+    EXPECT_EQ(lesson.instructions, "Push it **gently**.");
+    const BodyId floor{0};
+    const BodyId ball{1};
+    EXPECT_TRUE(lesson.allows(ball, BodyAttribute::Velocity));
+    EXPECT_TRUE(lesson.allows(ball, BodyAttribute::Friction));
+    EXPECT_FALSE(lesson.allows(ball, BodyAttribute::Position));
+    EXPECT_FALSE(lesson.allows(floor, BodyAttribute::Friction));
+    EXPECT_TRUE(lesson.allows(WorldAttribute::Gravity));
+    EXPECT_FALSE(lesson.allows(WorldAttribute::TimeStep));
+    ASSERT_EQ(lesson.questions.size(), 2u);
+    EXPECT_EQ(lesson.questions[0].prompt, "How far does it roll?");
+    EXPECT_EQ(lesson.questions[0].answer, 1.5);
+    EXPECT_EQ(lesson.questions[0].unit, "m");
+    EXPECT_EQ(lesson.questions[0].tolerance, 0.1);
+    EXPECT_EQ(lesson.questions[1].unit, "");
+}
+
+TEST(LessonReading, OnlyTheTitleIsRequired)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(R"({"title":"Watch"})"));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    const Lesson& lesson = *result.world->lesson;
+    EXPECT_EQ(lesson.title, "Watch");
+    EXPECT_TRUE(lesson.instructions.empty());
+    EXPECT_TRUE(lesson.editableBodies.empty());
+    EXPECT_TRUE(lesson.editableWorld.none());
+    EXPECT_TRUE(lesson.questions.empty());
+}
+
+TEST(LessonWriting, RoundTripKeepsTheLesson)
+{
+    const SceneLoadResult first = parseScene(sceneWithLesson(kFullLesson));
+    ASSERT_TRUE(first.ok()) << describe(first.problems);
+    const std::string text = serializeScene(*first.world);
+    const SceneLoadResult second = parseScene(text);
+    ASSERT_TRUE(second.ok()) << describe(second.problems) << "\n" << text;
+    EXPECT_EQ(second.world->lesson, first.world->lesson);
+    EXPECT_EQ(serializeScene(*second.world), text);
+}
+
+TEST(LessonWriting, FollowsARenamedBodyAndDropsARemovedOne)
+{
+    SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    World world = *result.world;
+    world.bodies[1].name = "marble";
+    SceneLoadResult renamed = parseScene(serializeScene(world));
+    ASSERT_TRUE(renamed.ok()) << describe(renamed.problems);
+    EXPECT_TRUE(renamed.world->lesson->allows(BodyId{1}, BodyAttribute::Velocity));
+
+    // The floor goes: the ball moves down to index 0 and keeps what it may change.
+    world.lesson->removeBodies({true, false});
+    world.bodies.erase(world.bodies.begin());
+    SceneLoadResult removed = parseScene(serializeScene(world));
+    ASSERT_TRUE(removed.ok()) << describe(removed.problems);
+    EXPECT_TRUE(removed.world->lesson->allows(BodyId{0}, BodyAttribute::Friction));
+    ASSERT_EQ(removed.world->lesson->editableBodies.size(), 1u);
+}
+
+/// One bad lesson and the problem it must give.
+struct BadLesson {
+    const char* name;
+    const char* lesson;
+    const char* path;
+    const char* words;
+};
+
+class LessonRefusal : public ::testing::TestWithParam<BadLesson> {};
+
+TEST_P(LessonRefusal, NamesThePathAndTheReason)
+{
+    const BadLesson& bad = GetParam();
+    const SceneLoadResult result = parseScene(sceneWithLesson(bad.lesson));
+    EXPECT_FALSE(result.ok());
+    EXPECT_FALSE(result.world.has_value());
+    EXPECT_TRUE(hasProblem(result.problems, bad.path, bad.words))
+        << "wanted " << bad.path << ": …" << bad.words << "…, got" << describe(result.problems);
+}
+
+const BadLesson kBadLessons[] = {
+    {"not-an-object", R"([1])", "lesson", "expected an object"},
+    {"unknown-key", R"({"title":"t","hint":"x"})", "lesson", "unknown key 'hint'"},
+    {"missing-title", R"({"instructions":"x"})", "lesson", "missing required key 'title'"},
+    {"empty-title", R"({"title":""})", "lesson.title", "must not be empty"},
+    {"title-not-a-string", R"({"title":3})", "lesson.title", "expected a string, got 3"},
+    {"editable-not-an-array", R"({"title":"t","editable":{}})", "lesson.editable", "expected an array"},
+    {"editable-unknown-key", R"({"title":"t","editable":[{"body":"ball","attributes":["angle"],"locked":true}]})",
+     "lesson.editable[0]", "unknown key 'locked'"},
+    {"editable-unknown-body", R"({"title":"t","editable":[{"body":"bal","attributes":["angle"]}]})",
+     "lesson.editable[0].body", "unknown body 'bal'"},
+    {"editable-body-twice",
+     R"({"title":"t","editable":[{"body":"ball","attributes":["angle"]},{"body":"ball","attributes":["mass"]}]})",
+     "lesson.editable[1].body", "listed twice (lesson.editable[0]"},
+    {"editable-unknown-attribute", R"({"title":"t","editable":[{"body":"ball","attributes":["colour"]}]})",
+     "lesson.editable[0].attributes[0]", "unknown attribute 'colour'"},
+    {"editable-attribute-twice", R"({"title":"t","editable":[{"body":"ball","attributes":["angle","angle"]}]})",
+     "lesson.editable[0].attributes[1]", "listed twice"},
+    {"editable-no-attributes", R"({"title":"t","editable":[{"body":"ball","attributes":[]}]})",
+     "lesson.editable[0].attributes", "at least one attribute"},
+    {"editable-world-unknown", R"({"title":"t","editableWorld":["wind"]})", "lesson.editableWorld[0]",
+     "unknown attribute 'wind'"},
+    {"question-not-an-object", R"({"title":"t","questions":["why?"]})", "lesson.questions[0]",
+     "expected an object"},
+    {"question-unknown-key", R"({"title":"t","questions":[{"prompt":"p","answer":1,"tolerance":1,"hint":"h"}]})",
+     "lesson.questions[0]", "unknown key 'hint'"},
+    {"question-no-answer", R"({"title":"t","questions":[{"prompt":"p","tolerance":1}]})", "lesson.questions[0]",
+     "missing required key 'answer'"},
+    {"question-answer-a-string", R"({"title":"t","questions":[{"prompt":"p","answer":"1","tolerance":1}]})",
+     "lesson.questions[0].answer", "expected a number"},
+    {"question-empty-prompt", R"({"title":"t","questions":[{"prompt":"","answer":1,"tolerance":1}]})",
+     "lesson.questions[0].prompt", "must not be empty"},
+    {"question-zero-tolerance", R"({"title":"t","questions":[{"prompt":"p","answer":1,"tolerance":0}]})",
+     "lesson.questions[0].tolerance", "greater than 0"},
+    {"question-no-tolerance", R"({"title":"t","questions":[{"prompt":"p","answer":1}]})", "lesson.questions[0]",
+     "missing required key 'tolerance'"},
+    {"question-unit-a-number", R"({"title":"t","questions":[{"prompt":"p","answer":1,"tolerance":1,"unit":5}]})",
+     "lesson.questions[0].unit", "expected a string"},
+    {"answer-too-large", R"({"title":"t","questions":[{"prompt":"p","answer":1e999,"tolerance":1}]})",
+     "lesson.questions[0].answer", "out of range"},
+};
+
+std::string badLessonName(const ::testing::TestParamInfo<BadLesson>& param)
+{
+    std::string name = param.param.name;
+    for (char& c : name)
+        c = c == '-' ? '_' : c;
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Bad, LessonRefusal, ::testing::ValuesIn(kBadLessons), badLessonName);
+
+TEST(LessonRefusal, ReportsEveryProblemAtOnce)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(
+        R"({"title":"","editable":[{"body":"nobody","attributes":["angle"]}],"questions":[{"prompt":"p","answer":1,"tolerance":-1}]})"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(hasProblem(result.problems, "lesson.title", "must not be empty"));
+    EXPECT_TRUE(hasProblem(result.problems, "lesson.editable[0].body", "unknown body"));
+    EXPECT_TRUE(hasProblem(result.problems, "lesson.questions[0].tolerance", "greater than 0"));
+}
+
+TEST(LessonRefusal, DuplicateKeysInsideTheLessonAreFound)
+{
+    const SceneLoadResult result =
+        parseScene(sceneWithLesson(R"({"title":"a","questions":[{"prompt":"p","prompt":"q","answer":1,"tolerance":1}]})"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(hasProblem(result.problems, "lesson.questions[0]", "duplicate key 'prompt'")) << describe(result.problems);
+}
+
+// ---- The Lesson type ----------------------------------------------------------------------------
+
+TEST(LessonType, QuestionAcceptsWithinTheToleranceOnly)
+{
+    const LessonQuestion question{"angle?", 26.57, "°", 1.0};
+    EXPECT_TRUE(question.accepts(26.57));
+    EXPECT_TRUE(question.accepts(27.5));
+    EXPECT_TRUE(question.accepts(25.6));
+    EXPECT_FALSE(question.accepts(27.6));
+    EXPECT_FALSE(question.accepts(25.5));
+    EXPECT_FALSE(question.accepts(std::numeric_limits<double>::quiet_NaN()));
+    EXPECT_FALSE(question.accepts(std::numeric_limits<double>::infinity()));
+}
+
+TEST(LessonType, SetEditableKeepsEntriesSortedAndDropsEmptyOnes)
+{
+    Lesson lesson;
+    BodyAttributes angle;
+    angle.set(static_cast<std::size_t>(BodyAttribute::Angle));
+    lesson.setEditable(BodyId{3}, angle);
+    lesson.setEditable(BodyId{1}, angle);
+    ASSERT_EQ(lesson.editableBodies.size(), 2u);
+    EXPECT_EQ(lesson.editableBodies[0].body, BodyId{1});
+    EXPECT_EQ(lesson.editableBodies[1].body, BodyId{3});
+    lesson.setEditable(BodyId{1}, BodyAttributes());
+    ASSERT_EQ(lesson.editableBodies.size(), 1u);
+    EXPECT_EQ(lesson.editableBodies[0].body, BodyId{3});
+    EXPECT_TRUE(lesson.allows(BodyId{3}, BodyAttribute::Angle));
+    EXPECT_FALSE(lesson.allows(BodyId{3}, BodyAttribute::Position));
+}
+
+TEST(LessonType, ChangedAttributesNamesWhatAnEditChanges)
+{
+    Body before;
+    before.name = "block";
+    before.shape = Box{1, 1};
+    before.updateDerived();
+    Body after = before;
+    EXPECT_TRUE(changedAttributes(before, after).none());
+    after.material.friction = 0.9;
+    after.state.angle = 0.3;
+    after.massSpec = MassSpec{MassMode::Mass, 2};
+    after.updateDerived();
+    const BodyAttributes changed = changedAttributes(before, after);
+    EXPECT_EQ(changed.count(), 3u);
+    EXPECT_TRUE(changed.test(static_cast<std::size_t>(BodyAttribute::Friction)));
+    EXPECT_TRUE(changed.test(static_cast<std::size_t>(BodyAttribute::Angle)));
+    EXPECT_TRUE(changed.test(static_cast<std::size_t>(BodyAttribute::Mass)));
+
+    WorldSettings settings;
+    WorldSettings moon = settings;
+    moon.gravity = Vec2(0, -1.62);
+    const WorldAttributes world = changedAttributes(settings, moon);
+    EXPECT_EQ(world.count(), 1u);
+    EXPECT_TRUE(world.test(static_cast<std::size_t>(WorldAttribute::Gravity)));
+}
+
+TEST(LessonType, AttributeNamesReadBack)
+{
+    for (const BodyAttribute attribute : kBodyAttributes)
+        EXPECT_EQ(bodyAttributeFromName(attributeName(attribute)), attribute);
+    for (const WorldAttribute attribute : kWorldAttributes)
+        EXPECT_EQ(worldAttributeFromName(attributeName(attribute)), attribute);
+    EXPECT_FALSE(bodyAttributeFromName("colour").has_value());
+}
+
+} // namespace
+} // namespace impetus::model
