@@ -523,6 +523,34 @@ bool diagnosticsFinite(const model::World& world, std::int64_t step, double dt, 
     return false;
 }
 
+/// Watches a run's total energy and warns once when it grows past the bound of
+/// model::energyGrowthWarning.
+class EnergyWatch {
+public:
+    explicit EnergyWatch(const model::World& world)
+    {
+        const controller::Energy energy = controller::computeEnergy(world);
+        m_baseline = model::energyBaseline(world, energy.total(), energy.kinetic, energy.potential);
+    }
+
+    /// Compares the energy at `step` with the start; the first time it is past the bound, says so.
+    void check(const model::World& world, std::int64_t step, double dt, std::ostream& err)
+    {
+        if (!m_baseline.active)
+            return;
+        const double now = controller::computeEnergy(world).total();
+        const double time = static_cast<double>(step) * dt;
+        if (const std::optional<model::SceneProblem> warning =
+                model::energyGrowthWarning(m_baseline, now, time, world.settings.integrator)) {
+            err << "impetus-cli run: warning: " << warning->toString() << '\n';
+            m_baseline.active = false;
+        }
+    }
+
+private:
+    model::EnergyBaseline m_baseline;
+};
+
 /// Prints "step k of n (p%)" on one rewritten terminal line, at most every kProgressInterval.
 class ProgressLine {
 public:
@@ -744,6 +772,7 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         return kExitRuntimeFailure;
 
     controller::Simulation simulation;
+    EnergyWatch energyWatch(world);
     {
         ProgressLine progress(err, errIsTerminal, totalSteps);
         for (std::int64_t step = 1; step <= totalSteps; ++step) {
@@ -758,6 +787,8 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
                 writeCsvRows(csv.stream(), world, time);
             if (collisionLog.isOpen())
                 writeCollisionLogRows(collisionLog.stream(), world, simulation.events(), time);
+            if (step % constants::kEnergyCheckSteps == 0 || step == totalSteps)
+                energyWatch.check(world, step, dt, err);
             progress.update(step);
         }
     }

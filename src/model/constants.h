@@ -91,6 +91,18 @@ inline constexpr int kMaxSolverSubsteps = 240;
 /// upper one pushes it through (the sequential-impulse solver converges slowly on such ratios).
 inline constexpr Scalar kMaxContactMassRatio = 100;
 
+/// A run whose total energy grows by more than this fraction of its starting energy (the larger
+/// of |E₀| and K₀ + |P₀|) gets a warning, when nothing in it does work (no fixed body moves).
+/// Contacts, springs and joints never add energy; explicit Euler does, on every bounce and
+/// oscillation, and at the default step a 10 % gain takes it a few tens of bounces, far beyond
+/// what rounding or a long RK4 run gives on a single body. docs/physics.md, "Energy over long runs".
+inline constexpr Scalar kEnergyGrowthWarning = 0.1;
+
+/// The headless runner compares the energy with its start every this many steps (1 s at the
+/// default step): often enough to say when the growth passed the bound, rare enough to cost
+/// nothing next to the steps.
+inline constexpr int kEnergyCheckSteps = 240;
+
 /// At most this many pairs of bodies are named in mass-ratio warnings; the rest are counted.
 inline constexpr int kMaxMassRatioWarnings = 5;
 

@@ -187,4 +187,35 @@ std::vector<SceneProblem> sceneWarnings(const World& world)
     return warnings;
 }
 
+EnergyBaseline energyBaseline(const World& world, Scalar total, Scalar kinetic, Scalar potential)
+{
+    EnergyBaseline baseline;
+    for (const Body& body : world.bodies) {
+        if (body.fixed && (body.state.velocity != Vec2::Zero() || body.state.angularVelocity != 0))
+            return baseline; // a moving fixed body does work: growth is then physics
+    }
+    const Scalar scale = std::max(std::abs(total), kinetic + std::abs(potential));
+    baseline.active = scale > 0 && std::isfinite(scale);
+    baseline.start = total;
+    baseline.bound = constants::kEnergyGrowthWarning * scale;
+    return baseline;
+}
+
+std::optional<SceneProblem> energyGrowthWarning(const EnergyBaseline& baseline, Scalar now, Scalar time,
+                                                IntegratorKind integrator)
+{
+    if (!baseline.active || !std::isfinite(now) || !(now - baseline.start > baseline.bound))
+        return std::nullopt;
+    const std::string cause =
+        integrator == IntegratorKind::Euler
+            ? "explicit Euler adds energy at every bounce and oscillation; rk4 or a smaller step keeps it"
+            : "the step may be too long for the fastest motion, or impacts of fast-spinning bodies add it; a "
+              "smaller step helps";
+    return SceneProblem{"world.energy", "the energy grew from " + shown(baseline.start) + " J to " + shown(now) +
+                                            " J by t = " + shown(time) + " s, more than " +
+                                            shown(100 * constants::kEnergyGrowthWarning) +
+                                            " % of its start, though nothing in the scene does work: " + cause +
+                                            " (docs/physics.md, \"Energy over long runs\")"};
+}
+
 } // namespace impetus::model

@@ -8,6 +8,7 @@
 #include "model/scene_io.h"
 #include "model/world.h"
 
+#include <optional>
 #include <vector>
 
 namespace impetus::model {
@@ -21,5 +22,21 @@ namespace impetus::model {
 /// - two dynamic bodies whose masses differ more than kMaxContactMassRatio times and that are
 ///   joined by a spring or joint, or touch at load time (their bounding circles overlap).
 std::vector<SceneProblem> sceneWarnings(const World& world);
+
+/// A run's starting energy, to judge its growth against (issue 17, F2).
+struct EnergyBaseline {
+    bool active = false; ///< false when something in the world does work (a fixed body moves)
+    Scalar start = 0; ///< total energy at the start, J
+    Scalar bound = 0; ///< growth past this is warned about, J: kEnergyGrowthWarning × max(|E₀|, K₀ + |P₀|)
+};
+
+/// The baseline of `world`, whose energies (J) are `total`, `kinetic` and `potential` now.
+EnergyBaseline energyBaseline(const World& world, Scalar total, Scalar kinetic, Scalar potential);
+
+/// The warning for a run whose total energy is `now` (J) at `time` (s), when it has grown past the
+/// baseline's bound; nothing otherwise (also when `now` is not finite, which is a failure of its
+/// own). The reason says what adds energy under `integrator`. Path "world.energy".
+std::optional<SceneProblem> energyGrowthWarning(const EnergyBaseline& baseline, Scalar now, Scalar time,
+                                                IntegratorKind integrator);
 
 } // namespace impetus::model

@@ -1,7 +1,7 @@
 #include "view/property_pane.h"
 
+#include "controller/diagnostics.h"
 #include "model/polygon.h"
-#include "model/scene_warnings.h"
 #include "view/view_constants.h"
 
 #include <QAccessible>
@@ -973,7 +973,16 @@ void PropertyPane::load(const model::World& world)
     }
     if (m_page == Page::World) {
         QStringList lines;
-        for (const model::SceneProblem& warning : model::sceneWarnings(world))
+        std::vector<model::SceneProblem> warnings = model::sceneWarnings(world);
+        // A run that adds energy where nothing does work (issue 17, F2): judged against the
+        // energy the world had at step 0.
+        const controller::Energy energy = controller::computeEnergy(world);
+        if (world.stepCount == 0)
+            m_energyBaseline = model::energyBaseline(world, energy.total(), energy.kinetic, energy.potential);
+        else if (const auto grown = model::energyGrowthWarning(m_energyBaseline, energy.total(), world.time,
+                                                                world.settings.integrator))
+            warnings.push_back(*grown);
+        for (const model::SceneProblem& warning : warnings)
             lines << tr("Warning: %1").arg(QString::fromStdString(warning.toString()));
         m_worldWarningText = lines.join(QLatin1Char('\n'));
     }

@@ -3,6 +3,7 @@
 /// The attribute pane: the editable properties of the selected body, spring or joint, or of the
 /// world when nothing is selected.
 
+#include "model/scene_warnings.h"
 #include "model/world.h"
 #include "view/canvas_instruments.h"
 #include "view/selection.h"
@@ -181,6 +182,7 @@ private:
     QString m_softDensityShown; ///< the text last put in the ellipses-per-m² field
     QString m_softGridText; ///< the shown soft body's ellipse count and density, or empty
     QString m_worldWarningText; ///< settings outside the tested ranges (model::sceneWarnings), or empty
+    model::EnergyBaseline m_energyBaseline; ///< the world's energy at step 0, to warn when a run adds energy
     QLocale m_locale; ///< the user's locale, without group separators
 
     QLabel* m_title = nullptr;

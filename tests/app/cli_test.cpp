@@ -732,3 +732,26 @@ TEST_F(Cli, AutoDensityFlagFixesTheDensityOrMeasures)
     const CliResult fixed = run({"run", dataFile("soft.json"), "--steps", "0", "--summary", "-"});
     EXPECT_EQ(jellyOf(fixed.out)["densityChosenBy"], "scene");
 }
+
+// ---- Issue 17, item 2 (F2): energy that grows ------------------------------------------------
+
+// bad-cases/F2: under explicit Euler a closed elastic box went from 358 J to 1.3e33 J with exit 0
+// and no word. Euler's growth is physics to see, so the run goes on, with a warning once the
+// energy has grown past 10 % of its start.
+TEST_F(Cli, GrowingEnergyIsWarnedOnce)
+{
+    const CliResult r = run({"run", dataFile("elastic_box.json"), "--integrator", "euler", "--time", "60"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string warning = "warning: world.energy: the energy grew from 359 J to";
+    const std::size_t at = r.err.find(warning);
+    ASSERT_NE(at, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(warning, at + 1), std::string::npos) << "warned twice:\n" << r.err;
+    EXPECT_NE(r.err.find("explicit Euler adds energy at every bounce and oscillation"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AProjectileUnderRk4GivesNoEnergyWarning)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--time", "5"});
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.err.find("energy grew"), std::string::npos) << r.err;
+}
