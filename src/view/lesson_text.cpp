@@ -7,39 +7,33 @@
 
 namespace impetus::view {
 
-namespace {
-
-QString translate(const char* text) { return QCoreApplication::translate("impetus::view::LessonText", text); }
-
-} // namespace
-
 QString attributeTitle(model::BodyAttribute attribute)
 {
     switch (attribute) {
     case model::BodyAttribute::Name:
-        return translate("name");
+        return QCoreApplication::translate("impetus::view::LessonText", "name");
     case model::BodyAttribute::ShapeSize:
-        return translate("size");
+        return QCoreApplication::translate("impetus::view::LessonText", "size");
     case model::BodyAttribute::Position:
-        return translate("position");
+        return QCoreApplication::translate("impetus::view::LessonText", "position");
     case model::BodyAttribute::Angle:
-        return translate("angle");
+        return QCoreApplication::translate("impetus::view::LessonText", "angle");
     case model::BodyAttribute::Velocity:
-        return translate("velocity");
+        return QCoreApplication::translate("impetus::view::LessonText", "velocity");
     case model::BodyAttribute::AngularVelocity:
-        return translate("angular velocity");
+        return QCoreApplication::translate("impetus::view::LessonText", "angular velocity");
     case model::BodyAttribute::Mass:
-        return translate("mass");
+        return QCoreApplication::translate("impetus::view::LessonText", "mass");
     case model::BodyAttribute::Restitution:
-        return translate("restitution");
+        return QCoreApplication::translate("impetus::view::LessonText", "restitution");
     case model::BodyAttribute::Friction:
-        return translate("friction");
+        return QCoreApplication::translate("impetus::view::LessonText", "friction");
     case model::BodyAttribute::Fixed:
-        return translate("fixed");
+        return QCoreApplication::translate("impetus::view::LessonText", "fixed");
     case model::BodyAttribute::FillColor:
-        return translate("colour");
+        return QCoreApplication::translate("impetus::view::LessonText", "colour");
     case model::BodyAttribute::Soft:
-        return translate("soft mode");
+        return QCoreApplication::translate("impetus::view::LessonText", "soft mode");
     }
     return {};
 }
@@ -48,13 +42,13 @@ QString attributeTitle(model::WorldAttribute attribute)
 {
     switch (attribute) {
     case model::WorldAttribute::Gravity:
-        return translate("gravity");
+        return QCoreApplication::translate("impetus::view::LessonText", "gravity");
     case model::WorldAttribute::Integrator:
-        return translate("integrator");
+        return QCoreApplication::translate("impetus::view::LessonText", "integrator");
     case model::WorldAttribute::TimeStep:
-        return translate("time step");
+        return QCoreApplication::translate("impetus::view::LessonText", "time step");
     case model::WorldAttribute::Drag:
-        return translate("drag");
+        return QCoreApplication::translate("impetus::view::LessonText", "drag");
     }
     return {};
 }
