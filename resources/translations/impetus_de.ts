@@ -98,6 +98,18 @@
         <source>Drag from a body to another body, or to a point in space, to add a spring.</source>
         <translation>Von einem Körper zu einem anderen Körper oder zu einem Punkt im Raum ziehen, um eine Feder hinzuzufügen.</translation>
     </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Δx = %1 m, Δy = %2 m</source>
+        <translation>Δx = %1 m, Δy = %2 m</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
 </context>
 <context>
     <name>impetus::app::App</name>
@@ -170,6 +182,73 @@
     </message>
 </context>
 <context>
+    <name>impetus::view::CanvasInstruments</name>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>kg·m/s</source>
+        <translation>kg·m/s</translation>
+    </message>
+    <message>
+        <source>gravity</source>
+        <translation>Gewichtskraft</translation>
+    </message>
+    <message>
+        <source>springs</source>
+        <translation>Federn</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>Luftwiderstand</translation>
+    </message>
+    <message>
+        <source>contact normal</source>
+        <translation>Normalkraft</translation>
+    </message>
+    <message>
+        <source>friction</source>
+        <translation>Reibung</translation>
+    </message>
+    <message>
+        <source>joints</source>
+        <translation>Gelenke</translation>
+    </message>
+    <message>
+        <source>1 %1 = %2 m</source>
+        <translation>1 %1 = %2 m</translation>
+    </message>
+    <message>
+        <source>velocity: %1</source>
+        <translation>Geschwindigkeit: %1</translation>
+    </message>
+    <message>
+        <source>acceleration: %1</source>
+        <translation>Beschleunigung: %1</translation>
+    </message>
+    <message>
+        <source>net force: %1</source>
+        <translation>Gesamtkraft: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>momentum: %1</source>
+        <translation>Impuls: %1</translation>
+    </message>
+</context>
+<context>
     <name>impetus::view::CanvasView</name>
     <message>
         <source>Simulation canvas</source>
@@ -230,6 +309,101 @@
         <source>Chain of springs</source>
         <translation>Federkette</translation>
     </message>
+    <message>
+        <source>Lesson: momentum in a cart crash</source>
+        <translation>Lektion: Impuls beim Zusammenstoß zweier Wagen</translation>
+    </message>
+    <message>
+        <source>Lesson: friction on an incline</source>
+        <translation>Lektion: Reibung auf der schiefen Ebene</translation>
+    </message>
+    <message>
+        <source>Lesson: pendulum period and length</source>
+        <translation>Lektion: Periode und Länge des Pendels</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::GraphPanel</name>
+    <message>
+        <source>Graph</source>
+        <translation>Diagramm</translation>
+    </message>
+    <message>
+        <source>Body plotted</source>
+        <translation>Dargestellter Körper</translation>
+    </message>
+    <message>
+        <source>Quantity on the vertical axis</source>
+        <translation>Größe auf der senkrechten Achse</translation>
+    </message>
+    <message>
+        <source>Quantity on the horizontal axis</source>
+        <translation>Größe auf der waagrechten Achse</translation>
+    </message>
+    <message>
+        <source>Value under the cursor</source>
+        <translation>Wert unter dem Mauszeiger</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Als CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>Save every recorded step as a table (time, body and the plotted quantities)</source>
+        <translation>Jeden aufgezeichneten Schritt als Tabelle speichern (Zeit, Körper und die dargestellten Größen)</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>Als PNG exportieren…</translation>
+    </message>
+    <message>
+        <source>Save the graph as a picture</source>
+        <translation>Das Diagramm als Bild speichern</translation>
+    </message>
+    <message>
+        <source>against</source>
+        <translation>gegen</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>%1 against %2 of %3</source>
+        <translation>%1 gegen %2 von %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2, %3 = %4</source>
+        <translation>%1 = %2, %3 = %4</translation>
+    </message>
+    <message>
+        <source>Cannot write “%1”: %2</source>
+        <translation>„%1“ lässt sich nicht schreiben: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>Das Bild „%1“ lässt sich nicht schreiben.</translation>
+    </message>
+    <message>
+        <source>Export Graph Data</source>
+        <translation>Diagrammdaten exportieren</translation>
+    </message>
+    <message>
+        <source>CSV tables (*.csv);;All files (*)</source>
+        <translation>CSV-Tabellen (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <source>Export Graph Picture</source>
+        <translation>Diagramm als Bild exportieren</translation>
+    </message>
+    <message>
+        <source>PNG pictures (*.png);;All files (*)</source>
+        <translation>PNG-Bilder (*.png);;Alle Dateien (*)</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LanguageMenu</name>
@@ -244,6 +418,393 @@
     <message>
         <source>System Language</source>
         <translation>Systemsprache</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Lesson (editing)</source>
+        <translation>Lektion (in Bearbeitung)</translation>
+    </message>
+    <message>
+        <source>&amp;Lesson</source>
+        <translation>&amp;Lektion</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Lift the lesson&apos;s locks and write its title, instructions, locks and questions</source>
+        <translation>Die Sperren der Lektion aufheben und Titel, Anleitung, Sperren und Fragen bearbeiten</translation>
+    </message>
+    <message>
+        <source>Create lesson</source>
+        <translation>Lektion anlegen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Lesson</source>
+        <translation>Lektion &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>Take the lesson out of the scene: no locks, no questions</source>
+        <translation>Die Lektion aus der Szene entfernen: keine Sperren, keine Fragen</translation>
+    </message>
+    <message>
+        <source>Remove lesson</source>
+        <translation>Lektion entfernen</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;Panel</source>
+        <translation>Lektions&amp;leiste</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonEditor</name>
+    <message>
+        <source>Lesson editor</source>
+        <translation>Lektionseditor</translation>
+    </message>
+    <message>
+        <source>Lesson title</source>
+        <translation>Titel der Lektion</translation>
+    </message>
+    <message>
+        <source>&amp;Title</source>
+        <translation>&amp;Titel</translation>
+    </message>
+    <message>
+        <source>Instructions</source>
+        <translation>Anleitung</translation>
+    </message>
+    <message>
+        <source>Plain text or simple Markdown: **bold**, *italic*, lists</source>
+        <translation>Einfacher Text oder einfaches Markdown: **fett**, *kursiv*, Listen</translation>
+    </message>
+    <message>
+        <source>What students should do; **bold**, *italic* and lists work</source>
+        <translation>Was die Schülerinnen und Schüler tun sollen; **fett**, *kursiv* und Listen gehen</translation>
+    </message>
+    <message>
+        <source>&amp;Instructions</source>
+        <translation>&amp;Anleitung</translation>
+    </message>
+    <message>
+        <source>Students may change (ticked; everything else is locked):</source>
+        <translation>Änderbar für Schülerinnen und Schüler (angehakt; alles andere ist gesperrt):</translation>
+    </message>
+    <message>
+        <source>What students may change</source>
+        <translation>Was Schülerinnen und Schüler ändern dürfen</translation>
+    </message>
+    <message>
+        <source>&amp;Questions</source>
+        <translation>&amp;Fragen</translation>
+    </message>
+    <message>
+        <source>Questions</source>
+        <translation>Fragen</translation>
+    </message>
+    <message>
+        <source>Question</source>
+        <translation>Frage</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Tolerance (±)</source>
+        <translation>Toleranz (±)</translation>
+    </message>
+    <message>
+        <source>Add Question</source>
+        <translation>Frage hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove Question</source>
+        <translation>Frage entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current question</source>
+        <translation>Die aktuelle Frage entfernen</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>World settings</source>
+        <translation>Welteinstellungen</translation>
+    </message>
+    <message>
+        <source>A lesson needs a title.</source>
+        <translation>Eine Lektion braucht einen Titel.</translation>
+    </message>
+    <message>
+        <source>Change lesson title</source>
+        <translation>Titel der Lektion ändern</translation>
+    </message>
+    <message>
+        <source>Change lesson instructions</source>
+        <translation>Anleitung der Lektion ändern</translation>
+    </message>
+    <message>
+        <source>Change which world settings students may change</source>
+        <translation>Ändern, welche Welteinstellungen änderbar sind</translation>
+    </message>
+    <message>
+        <source>Change what students may change of “%1”</source>
+        <translation>Ändern, was an „%1“ änderbar ist</translation>
+    </message>
+    <message>
+        <source>A question needs a prompt.</source>
+        <translation>Eine Frage braucht einen Fragetext.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number.</source>
+        <translation>%1: „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Tolerance must be greater than 0 (got %1).</source>
+        <translation>Die Toleranz muss größer als 0 sein (eingegeben: %1).</translation>
+    </message>
+    <message>
+        <source>Edit question %1</source>
+        <translation>Frage %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>New question</source>
+        <translation>Neue Frage</translation>
+    </message>
+    <message>
+        <source>Add question</source>
+        <translation>Frage hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove question %1</source>
+        <translation>Frage %1 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonPanel</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Lesson title</source>
+        <translation>Titel der Lektion</translation>
+    </message>
+    <message>
+        <source>Instructions</source>
+        <translation>Anleitung</translation>
+    </message>
+    <message>
+        <source>What you may change</source>
+        <translation>Was änderbar ist</translation>
+    </message>
+    <message>
+        <source>No lesson</source>
+        <translation>Keine Lektion</translation>
+    </message>
+    <message>
+        <source>This scene has no lesson. A teacher can write one with Lesson › Edit.</source>
+        <translation>Diese Szene hat keine Lektion. Eine Lehrkraft kann mit Lektion › Bearbeiten eine schreiben.</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Answer to question %1</source>
+        <translation>Antwort auf Frage %1</translation>
+    </message>
+    <message>
+        <source>your answer</source>
+        <translation>deine Antwort</translation>
+    </message>
+    <message>
+        <source>Unit: %1</source>
+        <translation>Einheit: %1</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Prüfen</translation>
+    </message>
+    <message>
+        <source>Check answer %1</source>
+        <translation>Antwort %1 prüfen</translation>
+    </message>
+    <message>
+        <source>Verdict on answer %1</source>
+        <translation>Bewertung der Antwort %1</translation>
+    </message>
+    <message>
+        <source>Type your answer first.</source>
+        <translation>Zuerst eine Antwort eingeben.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number.</source>
+        <translation>„%1“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Right! You are %1 off; up to %2 counts as right.</source>
+        <translation>Richtig! Die Abweichung ist %1; bis %2 gilt als richtig.</translation>
+    </message>
+    <message>
+        <source>Wrong: %1 too high (up to %2 off counts as right).</source>
+        <translation>Falsch: %1 zu hoch (bis %2 Abweichung gilt als richtig).</translation>
+    </message>
+    <message>
+        <source>Wrong: %1 too low (up to %2 off counts as right).</source>
+        <translation>Falsch: %1 zu niedrig (bis %2 Abweichung gilt als richtig).</translation>
+    </message>
+    <message>
+        <source>Lesson › Edit is on: nothing is locked.</source>
+        <translation>Lektion › Bearbeiten ist an: nichts ist gesperrt.</translation>
+    </message>
+    <message>
+        <source>“%1”: %2</source>
+        <translation>„%1“: %2</translation>
+    </message>
+    <message>
+        <source>world: %1</source>
+        <translation>Welt: %1</translation>
+    </message>
+    <message>
+        <source>Everything in this scene is locked by the lesson.</source>
+        <translation>Alles in dieser Szene ist von der Lektion gesperrt.</translation>
+    </message>
+    <message>
+        <source>You may change %1. Everything else is locked by the lesson.</source>
+        <translation>Änderbar: %1. Alles andere ist von der Lektion gesperrt.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonSession</name>
+    <message>
+        <source>Locked by the lesson: the %1 of “%2” can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: „%2“ (%1) lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: diese Einstellung (%1) lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: springs and joints can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: Federn und Gelenke lassen sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: “%1” can&apos;t be turned.</source>
+        <translation>Von der Lektion gesperrt: „%1“ lässt sich nicht drehen.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: “%1” can&apos;t be moved.</source>
+        <translation>Von der Lektion gesperrt: „%1“ lässt sich nicht verschieben.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: nothing can be deleted.</source>
+        <translation>Von der Lektion gesperrt: nichts lässt sich löschen.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: new bodies, springs and joints can&apos;t be added.</source>
+        <translation>Von der Lektion gesperrt: neue Körper, Federn und Gelenke lassen sich nicht hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this body can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: dieser Körper lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson. You may change its %1.</source>
+        <translation>Von der Lektion gesperrt. Änderbar: %1.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the world settings can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: die Welteinstellungen lassen sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson. You may change the %1.</source>
+        <translation>Von der Lektion gesperrt. Änderbar: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonText</name>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation>Winkelgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <source>restitution</source>
+        <translation>Stoßzahl</translation>
+    </message>
+    <message>
+        <source>friction</source>
+        <translation>Reibung</translation>
+    </message>
+    <message>
+        <source>fixed</source>
+        <translation>fest</translation>
+    </message>
+    <message>
+        <source>colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <source>soft mode</source>
+        <translation>weicher Modus</translation>
+    </message>
+    <message>
+        <source>gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>Luftwiderstand</translation>
     </message>
 </context>
 <context>
@@ -698,6 +1259,129 @@
     <message>
         <source>%1: %L2/m²</source>
         <translation>%1: %L2/m²</translation>
+    </message>
+    <message>
+        <source>Step Back</source>
+        <translation>Schritt zurück</translation>
+    </message>
+    <message>
+        <source>Go back one time step along the timeline (←)</source>
+        <translation>Auf der Zeitleiste einen Zeitschritt zurückgehen (←)</translation>
+    </message>
+    <message>
+        <source>Ruler</source>
+        <translation>Lineal</translation>
+    </message>
+    <message>
+        <source>Click two points, or drag: the distance in metres; snaps to body centres and corners</source>
+        <translation>Zwei Punkte anklicken oder ziehen: der Abstand in Metern; rastet an Körpermitten und Ecken ein</translation>
+    </message>
+    <message>
+        <source>Protractor</source>
+        <translation>Winkelmesser</translation>
+    </message>
+    <message>
+        <source>Click the vertex, then a point on each arm: the angle in degrees</source>
+        <translation>Den Scheitel anklicken, dann einen Punkt auf jedem Schenkel: der Winkel in Grad</translation>
+    </message>
+    <message>
+        <source>&amp;Vectors</source>
+        <translation>&amp;Vektoren</translation>
+    </message>
+    <message>
+        <source>&amp;Velocity</source>
+        <translation>&amp;Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s velocity</source>
+        <translation>Pfeile der Geschwindigkeit jedes Körpers</translation>
+    </message>
+    <message>
+        <source>&amp;Acceleration</source>
+        <translation>&amp;Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s acceleration, net force / mass</source>
+        <translation>Pfeile der Beschleunigung jedes Körpers, Gesamtkraft / Masse</translation>
+    </message>
+    <message>
+        <source>&amp;Net Force</source>
+        <translation>Gesa&amp;mtkraft</translation>
+    </message>
+    <message>
+        <source>Arrows of the net force on each body</source>
+        <translation>Pfeile der Gesamtkraft auf jeden Körper</translation>
+    </message>
+    <message>
+        <source>&amp;Force Parts</source>
+        <translation>&amp;Einzelkräfte</translation>
+    </message>
+    <message>
+        <source>Arrows of gravity, springs, drag, contact normal and friction forces and joint forces</source>
+        <translation>Pfeile von Gewichtskraft, Federkräften, Luftwiderstand, Normal- und Reibungskräften der Kontakte und Gelenkkräften</translation>
+    </message>
+    <message>
+        <source>&amp;Momentum</source>
+        <translation>&amp;Impuls</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s momentum</source>
+        <translation>Pfeile des Impulses jedes Körpers</translation>
+    </message>
+    <message>
+        <source>&amp;Longer Arrows</source>
+        <translation>&amp;Längere Pfeile</translation>
+    </message>
+    <message>
+        <source>Double the length of every arrow (the legend gives the scale)</source>
+        <translation>Alle Pfeile doppelt so lang zeichnen (die Legende nennt den Maßstab)</translation>
+    </message>
+    <message>
+        <source>&amp;Shorter Arrows</source>
+        <translation>&amp;Kürzere Pfeile</translation>
+    </message>
+    <message>
+        <source>Halve the length of every arrow (the legend gives the scale)</source>
+        <translation>Alle Pfeile halb so lang zeichnen (die Legende nennt den Maßstab)</translation>
+    </message>
+    <message>
+        <source>&amp;Trails</source>
+        <translation>&amp;Spuren</translation>
+    </message>
+    <message>
+        <source>Draw the path of each body&apos;s centre of mass, with a dot every few steps</source>
+        <translation>Die Bahn des Schwerpunkts jedes Körpers zeichnen, mit einem Punkt alle paar Schritte</translation>
+    </message>
+    <message>
+        <source>Trail &amp;Dots Every</source>
+        <translation>Spur&amp;punkte alle</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n Schritt</numerusform>
+            <numerusform>%n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Vectors and Trails for &amp;Selected Bodies Only</source>
+        <translation>Vektoren und Spuren nur für &amp;ausgewählte Körper</translation>
+    </message>
+    <message>
+        <source>Draw arrows and trails only for the bodies selected</source>
+        <translation>Pfeile und Spuren nur für die ausgewählten Körper zeichnen</translation>
+    </message>
+    <message>
+        <source>New &amp;Graph</source>
+        <translation>Neues &amp;Diagramm</translation>
+    </message>
+    <message>
+        <source>Plot a quantity of the selected body against time, or against another quantity</source>
+        <translation>Eine Größe des ausgewählten Körpers über der Zeit oder über einer anderen Größe auftragen</translation>
+    </message>
+    <message>
+        <source>Step back once</source>
+        <translation>Einen Schritt zurück</translation>
     </message>
 </context>
 <context>
@@ -1371,6 +2055,10 @@
         <source>%L1 ellipses at %L2 per m²</source>
         <translation>%L1 Ellipsen bei %L2 pro m²</translation>
     </message>
+    <message>
+        <source>Lock note</source>
+        <translation>Sperrhinweis</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::SceneDocument</name>
@@ -1385,6 +2073,29 @@
     <message>
         <source>Run</source>
         <translation>Lauf</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::TimelineBar</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Time along the run</source>
+        <translation>Zeit im Lauf</translation>
+    </message>
+    <message>
+        <source>Drag to go back to any moment of the run; Play goes on from there</source>
+        <translation>Ziehen, um zu einem beliebigen Moment des Laufs zurückzugehen; Start macht von dort aus weiter</translation>
+    </message>
+    <message>
+        <source>Time shown</source>
+        <translation>Angezeigte Zeit</translation>
+    </message>
+    <message>
+        <source>t = %1 s of %2 s</source>
+        <translation>t = %1 s von %2 s</translation>
     </message>
 </context>
 </TS>

@@ -98,6 +98,18 @@
         <source>Drag from a body to another body, or to a point in space, to add a spring.</source>
         <translation>Arrastra desde un cuerpo hasta otro cuerpo, o hasta un punto del espacio, para añadir un muelle.</translation>
     </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Δx = %1 m, Δy = %2 m</source>
+        <translation>Δx = %1 m, Δy = %2 m</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
 </context>
 <context>
     <name>impetus::app::App</name>
@@ -170,6 +182,73 @@
     </message>
 </context>
 <context>
+    <name>impetus::view::CanvasInstruments</name>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>kg·m/s</source>
+        <translation>kg·m/s</translation>
+    </message>
+    <message>
+        <source>gravity</source>
+        <translation>gravedad</translation>
+    </message>
+    <message>
+        <source>springs</source>
+        <translation>muelles</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>rozamiento del aire</translation>
+    </message>
+    <message>
+        <source>contact normal</source>
+        <translation>fuerza normal</translation>
+    </message>
+    <message>
+        <source>friction</source>
+        <translation>rozamiento</translation>
+    </message>
+    <message>
+        <source>joints</source>
+        <translation>uniones</translation>
+    </message>
+    <message>
+        <source>1 %1 = %2 m</source>
+        <translation>1 %1 = %2 m</translation>
+    </message>
+    <message>
+        <source>velocity: %1</source>
+        <translation>velocidad: %1</translation>
+    </message>
+    <message>
+        <source>acceleration: %1</source>
+        <translation>aceleración: %1</translation>
+    </message>
+    <message>
+        <source>net force: %1</source>
+        <translation>fuerza neta: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>momentum: %1</source>
+        <translation>momento lineal: %1</translation>
+    </message>
+</context>
+<context>
     <name>impetus::view::CanvasView</name>
     <message>
         <source>Simulation canvas</source>
@@ -230,6 +309,101 @@
         <source>Chain of springs</source>
         <translation>Cadena de muelles</translation>
     </message>
+    <message>
+        <source>Lesson: momentum in a cart crash</source>
+        <translation>Lección: momento lineal en un choque de carritos</translation>
+    </message>
+    <message>
+        <source>Lesson: friction on an incline</source>
+        <translation>Lección: rozamiento en un plano inclinado</translation>
+    </message>
+    <message>
+        <source>Lesson: pendulum period and length</source>
+        <translation>Lección: periodo y longitud del péndulo</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::GraphPanel</name>
+    <message>
+        <source>Graph</source>
+        <translation>Gráfico</translation>
+    </message>
+    <message>
+        <source>Body plotted</source>
+        <translation>Cuerpo representado</translation>
+    </message>
+    <message>
+        <source>Quantity on the vertical axis</source>
+        <translation>Magnitud en el eje vertical</translation>
+    </message>
+    <message>
+        <source>Quantity on the horizontal axis</source>
+        <translation>Magnitud en el eje horizontal</translation>
+    </message>
+    <message>
+        <source>Value under the cursor</source>
+        <translation>Valor bajo el cursor</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Exportar CSV…</translation>
+    </message>
+    <message>
+        <source>Save every recorded step as a table (time, body and the plotted quantities)</source>
+        <translation>Guardar cada paso registrado como tabla (tiempo, cuerpo y las magnitudes representadas)</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>Exportar PNG…</translation>
+    </message>
+    <message>
+        <source>Save the graph as a picture</source>
+        <translation>Guardar el gráfico como imagen</translation>
+    </message>
+    <message>
+        <source>against</source>
+        <translation>frente a</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 de %2</translation>
+    </message>
+    <message>
+        <source>%1 against %2 of %3</source>
+        <translation>%1 frente a %2 de %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2, %3 = %4</source>
+        <translation>%1 = %2, %3 = %4</translation>
+    </message>
+    <message>
+        <source>Cannot write “%1”: %2</source>
+        <translation>No se puede escribir «%1»: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>No se puede escribir la imagen «%1».</translation>
+    </message>
+    <message>
+        <source>Export Graph Data</source>
+        <translation>Exportar los datos del gráfico</translation>
+    </message>
+    <message>
+        <source>CSV tables (*.csv);;All files (*)</source>
+        <translation>Tablas CSV (*.csv);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>No se puede exportar</translation>
+    </message>
+    <message>
+        <source>Export Graph Picture</source>
+        <translation>Exportar la imagen del gráfico</translation>
+    </message>
+    <message>
+        <source>PNG pictures (*.png);;All files (*)</source>
+        <translation>Imágenes PNG (*.png);;Todos los archivos (*)</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LanguageMenu</name>
@@ -244,6 +418,393 @@
     <message>
         <source>System Language</source>
         <translation>Idioma del sistema</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Lesson (editing)</source>
+        <translation>Lección (en edición)</translation>
+    </message>
+    <message>
+        <source>&amp;Lesson</source>
+        <translation>&amp;Lección</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>Lift the lesson&apos;s locks and write its title, instructions, locks and questions</source>
+        <translation>Levantar los bloqueos de la lección y escribir su título, instrucciones, bloqueos y preguntas</translation>
+    </message>
+    <message>
+        <source>Create lesson</source>
+        <translation>Crear lección</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Lesson</source>
+        <translation>&amp;Quitar la lección</translation>
+    </message>
+    <message>
+        <source>Take the lesson out of the scene: no locks, no questions</source>
+        <translation>Quitar la lección de la escena: sin bloqueos ni preguntas</translation>
+    </message>
+    <message>
+        <source>Remove lesson</source>
+        <translation>Quitar la lección</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;Panel</source>
+        <translation>&amp;Panel de la lección</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonEditor</name>
+    <message>
+        <source>Lesson editor</source>
+        <translation>Editor de la lección</translation>
+    </message>
+    <message>
+        <source>Lesson title</source>
+        <translation>Título de la lección</translation>
+    </message>
+    <message>
+        <source>&amp;Title</source>
+        <translation>&amp;Título</translation>
+    </message>
+    <message>
+        <source>Instructions</source>
+        <translation>Instrucciones</translation>
+    </message>
+    <message>
+        <source>Plain text or simple Markdown: **bold**, *italic*, lists</source>
+        <translation>Texto simple o Markdown sencillo: **negrita**, *cursiva*, listas</translation>
+    </message>
+    <message>
+        <source>What students should do; **bold**, *italic* and lists work</source>
+        <translation>Qué deben hacer los alumnos; funcionan **negrita**, *cursiva* y listas</translation>
+    </message>
+    <message>
+        <source>&amp;Instructions</source>
+        <translation>&amp;Instrucciones</translation>
+    </message>
+    <message>
+        <source>Students may change (ticked; everything else is locked):</source>
+        <translation>Los alumnos pueden cambiar (lo marcado; todo lo demás queda bloqueado):</translation>
+    </message>
+    <message>
+        <source>What students may change</source>
+        <translation>Qué pueden cambiar los alumnos</translation>
+    </message>
+    <message>
+        <source>&amp;Questions</source>
+        <translation>&amp;Preguntas</translation>
+    </message>
+    <message>
+        <source>Questions</source>
+        <translation>Preguntas</translation>
+    </message>
+    <message>
+        <source>Question</source>
+        <translation>Pregunta</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>Respuesta</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>Tolerance (±)</source>
+        <translation>Tolerancia (±)</translation>
+    </message>
+    <message>
+        <source>Add Question</source>
+        <translation>Añadir pregunta</translation>
+    </message>
+    <message>
+        <source>Remove Question</source>
+        <translation>Quitar pregunta</translation>
+    </message>
+    <message>
+        <source>Remove the current question</source>
+        <translation>Quitar la pregunta actual</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>World settings</source>
+        <translation>Ajustes del mundo</translation>
+    </message>
+    <message>
+        <source>A lesson needs a title.</source>
+        <translation>Una lección necesita un título.</translation>
+    </message>
+    <message>
+        <source>Change lesson title</source>
+        <translation>Cambiar el título de la lección</translation>
+    </message>
+    <message>
+        <source>Change lesson instructions</source>
+        <translation>Cambiar las instrucciones de la lección</translation>
+    </message>
+    <message>
+        <source>Change which world settings students may change</source>
+        <translation>Cambiar qué ajustes del mundo pueden cambiar los alumnos</translation>
+    </message>
+    <message>
+        <source>Change what students may change of “%1”</source>
+        <translation>Cambiar qué pueden cambiar los alumnos de «%1»</translation>
+    </message>
+    <message>
+        <source>A question needs a prompt.</source>
+        <translation>Una pregunta necesita un enunciado.</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number.</source>
+        <translation>%1: «%2» no es un número.</translation>
+    </message>
+    <message>
+        <source>Tolerance must be greater than 0 (got %1).</source>
+        <translation>La tolerancia debe ser mayor que 0 (se indicó %1).</translation>
+    </message>
+    <message>
+        <source>Edit question %1</source>
+        <translation>Editar la pregunta %1</translation>
+    </message>
+    <message>
+        <source>New question</source>
+        <translation>Nueva pregunta</translation>
+    </message>
+    <message>
+        <source>Add question</source>
+        <translation>Añadir pregunta</translation>
+    </message>
+    <message>
+        <source>Remove question %1</source>
+        <translation>Quitar la pregunta %1</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonPanel</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Lesson title</source>
+        <translation>Título de la lección</translation>
+    </message>
+    <message>
+        <source>Instructions</source>
+        <translation>Instrucciones</translation>
+    </message>
+    <message>
+        <source>What you may change</source>
+        <translation>Qué puedes cambiar</translation>
+    </message>
+    <message>
+        <source>No lesson</source>
+        <translation>Sin lección</translation>
+    </message>
+    <message>
+        <source>This scene has no lesson. A teacher can write one with Lesson › Edit.</source>
+        <translation>Esta escena no tiene lección. Un profesor puede escribir una con Lección › Editar.</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Answer to question %1</source>
+        <translation>Respuesta a la pregunta %1</translation>
+    </message>
+    <message>
+        <source>your answer</source>
+        <translation>tu respuesta</translation>
+    </message>
+    <message>
+        <source>Unit: %1</source>
+        <translation>Unidad: %1</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Comprobar</translation>
+    </message>
+    <message>
+        <source>Check answer %1</source>
+        <translation>Comprobar la respuesta %1</translation>
+    </message>
+    <message>
+        <source>Verdict on answer %1</source>
+        <translation>Resultado de la respuesta %1</translation>
+    </message>
+    <message>
+        <source>Type your answer first.</source>
+        <translation>Escribe primero tu respuesta.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number.</source>
+        <translation>«%1» no es un número.</translation>
+    </message>
+    <message>
+        <source>Right! You are %1 off; up to %2 counts as right.</source>
+        <translation>¡Correcto! Te desvías %1; hasta %2 cuenta como correcto.</translation>
+    </message>
+    <message>
+        <source>Wrong: %1 too high (up to %2 off counts as right).</source>
+        <translation>Incorrecto: %1 demasiado alto (una desviación de hasta %2 cuenta como correcta).</translation>
+    </message>
+    <message>
+        <source>Wrong: %1 too low (up to %2 off counts as right).</source>
+        <translation>Incorrecto: %1 demasiado bajo (una desviación de hasta %2 cuenta como correcta).</translation>
+    </message>
+    <message>
+        <source>Lesson › Edit is on: nothing is locked.</source>
+        <translation>Lección › Editar está activo: nada está bloqueado.</translation>
+    </message>
+    <message>
+        <source>“%1”: %2</source>
+        <translation>«%1»: %2</translation>
+    </message>
+    <message>
+        <source>world: %1</source>
+        <translation>mundo: %1</translation>
+    </message>
+    <message>
+        <source>Everything in this scene is locked by the lesson.</source>
+        <translation>Todo en esta escena está bloqueado por la lección.</translation>
+    </message>
+    <message>
+        <source>You may change %1. Everything else is locked by the lesson.</source>
+        <translation>Puedes cambiar %1. Todo lo demás está bloqueado por la lección.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonSession</name>
+    <message>
+        <source>Locked by the lesson: the %1 of “%2” can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: no se puede cambiar «%2» (%1).</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: este ajuste (%1) no se puede cambiar.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: springs and joints can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: no se pueden cambiar los muelles ni las uniones.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: “%1” can&apos;t be turned.</source>
+        <translation>Bloqueado por la lección: «%1» no se puede girar.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: “%1” can&apos;t be moved.</source>
+        <translation>Bloqueado por la lección: «%1» no se puede mover.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: nothing can be deleted.</source>
+        <translation>Bloqueado por la lección: no se puede eliminar nada.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: new bodies, springs and joints can&apos;t be added.</source>
+        <translation>Bloqueado por la lección: no se pueden añadir cuerpos, muelles ni uniones.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this body can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: este cuerpo no se puede cambiar.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson. You may change its %1.</source>
+        <translation>Bloqueado por la lección. Puedes cambiar: %1.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the world settings can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: los ajustes del mundo no se pueden cambiar.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson. You may change the %1.</source>
+        <translation>Bloqueado por la lección. Puedes cambiar: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::LessonText</name>
+    <message>
+        <source>name</source>
+        <translation>nombre</translation>
+    </message>
+    <message>
+        <source>size</source>
+        <translation>tamaño</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>posición</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>ángulo</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>velocidad</translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation>velocidad angular</translation>
+    </message>
+    <message>
+        <source>mass</source>
+        <translation>masa</translation>
+    </message>
+    <message>
+        <source>restitution</source>
+        <translation>restitución</translation>
+    </message>
+    <message>
+        <source>friction</source>
+        <translation>rozamiento</translation>
+    </message>
+    <message>
+        <source>fixed</source>
+        <translation>fijo</translation>
+    </message>
+    <message>
+        <source>colour</source>
+        <translation>color</translation>
+    </message>
+    <message>
+        <source>soft mode</source>
+        <translation>modo blando</translation>
+    </message>
+    <message>
+        <source>gravity</source>
+        <translation>gravedad</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>integrador</translation>
+    </message>
+    <message>
+        <source>time step</source>
+        <translation>paso de tiempo</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>rozamiento del aire</translation>
     </message>
 </context>
 <context>
@@ -698,6 +1259,129 @@
     <message>
         <source>%1: %L2/m²</source>
         <translation>%1: %L2/m²</translation>
+    </message>
+    <message>
+        <source>Step Back</source>
+        <translation>Paso atrás</translation>
+    </message>
+    <message>
+        <source>Go back one time step along the timeline (←)</source>
+        <translation>Retroceder un paso de tiempo en la línea de tiempo (←)</translation>
+    </message>
+    <message>
+        <source>Ruler</source>
+        <translation>Regla</translation>
+    </message>
+    <message>
+        <source>Click two points, or drag: the distance in metres; snaps to body centres and corners</source>
+        <translation>Haz clic en dos puntos o arrastra: la distancia en metros; se ajusta a los centros y esquinas de los cuerpos</translation>
+    </message>
+    <message>
+        <source>Protractor</source>
+        <translation>Transportador</translation>
+    </message>
+    <message>
+        <source>Click the vertex, then a point on each arm: the angle in degrees</source>
+        <translation>Haz clic en el vértice y luego en un punto de cada lado: el ángulo en grados</translation>
+    </message>
+    <message>
+        <source>&amp;Vectors</source>
+        <translation>&amp;Vectores</translation>
+    </message>
+    <message>
+        <source>&amp;Velocity</source>
+        <translation>&amp;Velocidad</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s velocity</source>
+        <translation>Flechas de la velocidad de cada cuerpo</translation>
+    </message>
+    <message>
+        <source>&amp;Acceleration</source>
+        <translation>&amp;Aceleración</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s acceleration, net force / mass</source>
+        <translation>Flechas de la aceleración de cada cuerpo, fuerza neta / masa</translation>
+    </message>
+    <message>
+        <source>&amp;Net Force</source>
+        <translation>Fuerza &amp;neta</translation>
+    </message>
+    <message>
+        <source>Arrows of the net force on each body</source>
+        <translation>Flechas de la fuerza neta sobre cada cuerpo</translation>
+    </message>
+    <message>
+        <source>&amp;Force Parts</source>
+        <translation>&amp;Fuerzas por separado</translation>
+    </message>
+    <message>
+        <source>Arrows of gravity, springs, drag, contact normal and friction forces and joint forces</source>
+        <translation>Flechas de la gravedad, los muelles, el rozamiento del aire, las fuerzas normales y de rozamiento de los contactos y las fuerzas de las uniones</translation>
+    </message>
+    <message>
+        <source>&amp;Momentum</source>
+        <translation>&amp;Momento lineal</translation>
+    </message>
+    <message>
+        <source>Arrows of each body&apos;s momentum</source>
+        <translation>Flechas del momento lineal de cada cuerpo</translation>
+    </message>
+    <message>
+        <source>&amp;Longer Arrows</source>
+        <translation>Flechas más &amp;largas</translation>
+    </message>
+    <message>
+        <source>Double the length of every arrow (the legend gives the scale)</source>
+        <translation>Duplicar la longitud de cada flecha (la leyenda indica la escala)</translation>
+    </message>
+    <message>
+        <source>&amp;Shorter Arrows</source>
+        <translation>Flechas más &amp;cortas</translation>
+    </message>
+    <message>
+        <source>Halve the length of every arrow (the legend gives the scale)</source>
+        <translation>Reducir a la mitad la longitud de cada flecha (la leyenda indica la escala)</translation>
+    </message>
+    <message>
+        <source>&amp;Trails</source>
+        <translation>&amp;Trayectorias</translation>
+    </message>
+    <message>
+        <source>Draw the path of each body&apos;s centre of mass, with a dot every few steps</source>
+        <translation>Dibujar la trayectoria del centro de masas de cada cuerpo, con un punto cada pocos pasos</translation>
+    </message>
+    <message>
+        <source>Trail &amp;Dots Every</source>
+        <translation>&amp;Puntos de trayectoria cada</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n paso</numerusform>
+            <numerusform>%n pasos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Vectors and Trails for &amp;Selected Bodies Only</source>
+        <translation>Vectores y trayectorias solo de los cuerpos &amp;seleccionados</translation>
+    </message>
+    <message>
+        <source>Draw arrows and trails only for the bodies selected</source>
+        <translation>Dibujar flechas y trayectorias solo para los cuerpos seleccionados</translation>
+    </message>
+    <message>
+        <source>New &amp;Graph</source>
+        <translation>Nuevo &amp;gráfico</translation>
+    </message>
+    <message>
+        <source>Plot a quantity of the selected body against time, or against another quantity</source>
+        <translation>Representar una magnitud del cuerpo seleccionado frente al tiempo o frente a otra magnitud</translation>
+    </message>
+    <message>
+        <source>Step back once</source>
+        <translation>Retroceder un paso</translation>
     </message>
 </context>
 <context>
@@ -1371,6 +2055,10 @@
         <source>%L1 ellipses at %L2 per m²</source>
         <translation>%L1 elipses a %L2 por m²</translation>
     </message>
+    <message>
+        <source>Lock note</source>
+        <translation>Nota de bloqueo</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::SceneDocument</name>
@@ -1385,6 +2073,29 @@
     <message>
         <source>Run</source>
         <translation>Ejecución</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::TimelineBar</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>Time along the run</source>
+        <translation>Tiempo a lo largo de la ejecución</translation>
+    </message>
+    <message>
+        <source>Drag to go back to any moment of the run; Play goes on from there</source>
+        <translation>Arrastra para volver a cualquier momento de la ejecución; Iniciar continúa desde ahí</translation>
+    </message>
+    <message>
+        <source>Time shown</source>
+        <translation>Tiempo mostrado</translation>
+    </message>
+    <message>
+        <source>t = %1 s of %2 s</source>
+        <translation>t = %1 s de %2 s</translation>
     </message>
 </context>
 </TS>

@@ -22,6 +22,7 @@ namespace impetus::view {
 class BodyItem;
 class CanvasInstruments;
 class JointItem;
+class LessonSession;
 class SceneDocument;
 class SimulationRunner;
 class SoftDetailItem;
@@ -134,6 +135,11 @@ public:
     /// The last message shown by showMessage().
     QString lastMessage() const { return m_lastMessage; }
 
+    /// The lesson whose locks the tools obey (no drag, turn or nudge of a locked body), or nullptr.
+    const LessonSession* lessonSession() const { return m_lessonSession; }
+    /// Makes the tools obey `session`'s locks; the session must outlive the canvas.
+    void setLessonSession(const LessonSession* session) { m_lessonSession = session; }
+
     /// How the canvas draws (line widths, grid colours, hatched collisions): the normal look, or
     /// projector mode's.
     const CanvasLook& look() const { return m_look; }
@@ -222,6 +228,7 @@ private:
     QPointF m_lastPanPos; ///< px
     QString m_lastMessage;
     CanvasLook m_look;
+    const LessonSession* m_lessonSession = nullptr;
 };
 
 } // namespace impetus::view

@@ -4,6 +4,8 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace impetus::view {
 
 namespace {
@@ -18,6 +20,10 @@ std::vector<ExampleScene> exampleScenes()
     const QDir folder(QStringLiteral(":/examples"));
     for (const QString& file : folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
         scenes.push_back({folder.filePath(file), exampleTitle(QFileInfo(file).completeBaseName())});
+    // The lessons come after the plain examples, together, so the menu reads as two lists.
+    std::stable_partition(scenes.begin(), scenes.end(), [](const ExampleScene& scene) {
+        return !QFileInfo(scene.path).completeBaseName().startsWith(QLatin1String(kLessonPrefix));
+    });
     return scenes;
 }
 
@@ -35,6 +41,9 @@ QString exampleTitle(const QString& baseName)
         {"box-stack", QT_TRANSLATE_NOOP("impetus::view::Examples", "Box stack and overhang")},
         {"default", QT_TRANSLATE_NOOP("impetus::view::Examples", "Default scene")},
         {"incline", QT_TRANSLATE_NOOP("impetus::view::Examples", "Block on an incline")},
+        {"lesson-cart-crash", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: momentum in a cart crash")},
+        {"lesson-incline-friction", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: friction on an incline")},
+        {"lesson-pendulum-length", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: pendulum period and length")},
         {"newtons-cradle", QT_TRANSLATE_NOOP("impetus::view::Examples", "Newton's cradle")},
         {"pendulum", QT_TRANSLATE_NOOP("impetus::view::Examples", "Pendulum")},
         {"projectile", QT_TRANSLATE_NOOP("impetus::view::Examples", "Projectile over the ground")},

@@ -14,7 +14,10 @@ struct ExampleScene {
     QString title; ///< "Newton's cradle"
 };
 
-/// Every scene file under ":/examples/", sorted by file name.
+/// The file names of lesson scenes (scenes with a `lesson` block) among the examples start so.
+inline constexpr char kLessonPrefix[] = "lesson-";
+
+/// Every scene file under ":/examples/", sorted by file name, the lessons (kLessonPrefix) last.
 std::vector<ExampleScene> exampleScenes();
 
 /// The title of the example file called `baseName` (no folder or extension): a translated title

@@ -7,6 +7,8 @@
 #include "view/example_catalog.h"
 #include "view/graph_panel.h"
 #include "view/language.h"
+#include "view/lesson_dock.h"
+#include "view/lesson_session.h"
 #include "view/pace_indicator.h"
 #include "view/projector_mode.h"
 #include "view/property_pane.h"
@@ -123,6 +125,8 @@ MainWindow::MainWindow(QWidget* parent)
     // it was left on, goes full screen again.
     new ProjectorMode(*this, *m_canvas);
     addLanguageMenu(*this);
+    // The Lesson menu and dock; the canvas, the pane and Delete obey the lesson's locks.
+    m_lesson = addLessons(*this);
 
     m_canvas->setFocus();
     updateTitle();
@@ -172,8 +176,13 @@ void MainWindow::createActions()
     m_deleteAction = new QAction(QIcon::fromTheme(QStringLiteral("edit-delete")), tr("&Delete"), this);
     m_deleteAction->setShortcut(QKeySequence::Delete);
     m_deleteAction->setStatusTip(tr("Delete the selection, and the springs and joints on deleted bodies"));
-    connect(m_deleteAction, &QAction::triggered, this,
-            [this] { m_document->remove(m_document->selection(), tr("Delete")); });
+    connect(m_deleteAction, &QAction::triggered, this, [this] {
+        if (const std::optional<QString> lock = m_lesson->removalLock(m_document->selection())) {
+            statusBar()->showMessage(*lock);
+            return;
+        }
+        m_document->remove(m_document->selection(), tr("Delete"));
+    });
     const auto updateDelete = [this] { m_deleteAction->setEnabled(!m_document->selection().empty()); };
     connect(m_document, &SceneDocument::selectionChanged, this, updateDelete);
     updateDelete();

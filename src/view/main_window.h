@@ -30,6 +30,7 @@ namespace impetus::view {
 
 class CanvasView;
 class GraphPanel;
+class LessonSession;
 class PaceIndicator;
 class PropertyPane;
 class SceneDocument;
@@ -157,6 +158,8 @@ public:
     QComboBox* speedBox() const { return m_speedBox; }
     /// The Examples menu.
     QMenu* examplesMenu() const { return m_examplesMenu; }
+    /// The scene's lesson and its locks (Lesson menu, lesson dock).
+    LessonSession& lesson() const { return *m_lesson; }
 
 protected:
     /// Asks about unsaved edits, then keeps the dock layout in QSettings.
@@ -236,6 +239,7 @@ private:
     QAction* m_softEllipsesAction = nullptr;
     QAction* m_compareRigidAction = nullptr;
     QAction* m_softStrainAction = nullptr;
+    LessonSession* m_lesson = nullptr;
 };
 
 } // namespace impetus::view

@@ -2,6 +2,7 @@
 
 #include "controller/diagnostics.h"
 #include "model/polygon.h"
+#include "view/lesson_session.h"
 #include "view/view_constants.h"
 
 #include <QAccessible>
@@ -122,6 +123,41 @@ void setShapeSize(model::Body& body, Scalar S::*member, double value)
         shape->*member = value;
 }
 
+/// The lesson attribute that the body field called `name` edits; nullopt for read-only fields.
+std::optional<model::BodyAttribute> bodyAttributeOf(const QString& name)
+{
+    using A = model::BodyAttribute;
+    static const std::pair<const char*, A> kFields[] = {
+        {"name", A::Name},           {"radius", A::ShapeSize},      {"radiusX", A::ShapeSize},
+        {"radiusY", A::ShapeSize},   {"width", A::ShapeSize},       {"height", A::ShapeSize},
+        {"vertices", A::ShapeSize},  {"addVertex", A::ShapeSize},   {"removeVertex", A::ShapeSize},
+        {"positionX", A::Position},  {"positionY", A::Position},    {"angle", A::Angle},
+        {"velocityX", A::Velocity},  {"velocityY", A::Velocity},    {"angularVelocity", A::AngularVelocity},
+        {"massMode", A::Mass},       {"density", A::Mass},          {"mass", A::Mass},
+        {"restitution", A::Restitution}, {"friction", A::Friction}, {"fixed", A::Fixed},
+        {"color", A::FillColor},     {"soft", A::Soft},             {"softDensity", A::Soft},
+        {"softStiffness", A::Soft},  {"softDamping", A::Soft}};
+    for (const auto& [field, attribute] : kFields) {
+        if (name == QLatin1String(field))
+            return attribute;
+    }
+    return std::nullopt;
+}
+
+/// The lesson attribute that the world field called `name` edits.
+std::optional<model::WorldAttribute> worldAttributeOf(const QString& name)
+{
+    using A = model::WorldAttribute;
+    static const std::pair<const char*, A> kFields[] = {
+        {"gravityX", A::Gravity}, {"gravityY", A::Gravity}, {"integrator", A::Integrator},
+        {"timeStep", A::TimeStep}, {"drag", A::Drag}};
+    for (const auto& [field, attribute] : kFields) {
+        if (name == QLatin1String(field))
+            return attribute;
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 /// One numeric line edit bound to one model value.
@@ -161,6 +197,14 @@ PropertyPane::PropertyPane(QWidget* parent)
     m_note->setWordWrap(true);
     m_note->hide();
     layout->addWidget(m_note);
+
+    m_lockNote = new QLabel(this);
+    m_lockNote->setObjectName(QStringLiteral("lockNote"));
+    m_lockNote->setAccessibleName(tr("Lock note"));
+    m_lockNote->setWordWrap(true);
+    m_lockNote->setTextFormat(Qt::PlainText);
+    m_lockNote->hide();
+    layout->addWidget(m_lockNote);
 
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("message"));
@@ -202,6 +246,8 @@ PropertyPane::~PropertyPane()
 }
 
 QString PropertyPane::message() const { return m_message->text(); }
+
+QString PropertyPane::lockNote() const { return m_lockNote->text(); }
 
 // ---- Building -----------------------------------------------------------------------------------
 
@@ -373,6 +419,7 @@ void PropertyPane::buildBodyPage()
                                kVisibleVertexRows * m_vertices->verticalHeader()->defaultSectionSize() +
                                2 * m_vertices->frameWidth());
     connect(m_vertices, &QTableWidget::itemChanged, this, &PropertyPane::onVertexEdited);
+    m_vertexEditTriggers = static_cast<int>(m_vertices->editTriggers());
     verticesLayout->addWidget(m_vertices);
     auto* buttons = new QHBoxLayout;
     m_addVertex = named(new QPushButton(tr("Add vertex")), "addVertex", tr("Add vertex"));
@@ -589,7 +636,11 @@ PropertyPane::Apply PropertyPane::editBody(std::function<void(model::Body&, doub
 PropertyPane::Apply PropertyPane::editSpring(std::function<void(model::Spring&, double)> set,
                                              const QString& actionName)
 {
-    return editCopy(m_spring, std::move(set), [this, actionName](const model::Spring& spring) {
+    return editCopy(m_spring, std::move(set), [this, actionName](const model::Spring& spring) -> std::optional<QString> {
+        if (m_lesson && spring != m_spring) {
+            if (std::optional<QString> lock = m_lesson->connectionLock())
+                return lock;
+        }
         if (spring != m_spring) {
             m_spring = spring;
             emit springEdited(m_index, m_spring, actionName);
@@ -608,8 +659,7 @@ PropertyPane::Apply PropertyPane::editWorld(std::function<void(model::WorldSetti
                                             const QString& actionName)
 {
     return editCopy(m_settings, std::move(set), [this, actionName](const model::WorldSettings& settings) {
-        commitWorldSettings(settings, actionName);
-        return std::optional<QString>();
+        return commitWorldSettings(settings, actionName);
     });
 }
 
@@ -626,6 +676,10 @@ std::optional<QString> PropertyPane::commitBody(model::Body body, const QString&
     }
     if (body == m_body)
         return std::nullopt;
+    if (m_lesson) {
+        if (std::optional<QString> lock = m_lesson->refusal(m_index, m_body, body))
+            return lock;
+    }
     m_body = std::move(body);
     emit bodyEdited(m_index, m_body, actionName);
     display(true);
@@ -634,6 +688,10 @@ std::optional<QString> PropertyPane::commitBody(model::Body body, const QString&
 
 std::optional<QString> PropertyPane::commitJoint(model::Joint joint, const QString& actionName)
 {
+    if (m_lesson) {
+        if (std::optional<QString> lock = m_lesson->connectionLock())
+            return lock;
+    }
     // The derived anchors and length follow from the edited ones and the bodies' current poses,
     // exactly as the scene loader derives them at load time.
     if (joint.type == model::JointType::Pin) {
@@ -695,9 +753,11 @@ void PropertyPane::onNameEdited()
     } else {
         model::Body body = m_body;
         body.name = newName;
-        m_bodyNames[static_cast<std::size_t>(m_index)] = newName;
         clearMessage();
-        commitBody(std::move(body), tr("Rename body"));
+        if (const std::optional<QString> problem = commitBody(std::move(body), tr("Rename body")))
+            refuse(*problem);
+        else
+            m_bodyNames[static_cast<std::size_t>(m_index)] = newName;
     }
     m_name->setText(toQString(m_body.name));
 }
@@ -835,16 +895,22 @@ void PropertyPane::onIntegratorActivated(int index)
         return;
     model::WorldSettings settings = m_settings;
     settings.integrator = static_cast<model::IntegratorKind>(m_integrator->itemData(index).toInt());
-    clearMessage();
-    commitWorldSettings(settings, tr("Change integrator"));
+    report(commitWorldSettings(settings, tr("Change integrator")));
+    display(true);
 }
 
-void PropertyPane::commitWorldSettings(const model::WorldSettings& settings, const QString& actionName)
+std::optional<QString> PropertyPane::commitWorldSettings(const model::WorldSettings& settings,
+                                                         const QString& actionName)
 {
     if (settings == m_settings)
-        return;
+        return std::nullopt;
+    if (m_lesson) {
+        if (std::optional<QString> lock = m_lesson->refusal(m_settings, settings))
+            return lock;
+    }
     m_settings = settings;
     emit worldSettingsEdited(m_settings, actionName);
+    return std::nullopt;
 }
 
 void PropertyPane::onFixedClicked(bool checked)
@@ -1022,6 +1088,71 @@ void PropertyPane::display(bool replaceFocused)
         displayJoint();
         break;
     }
+    applyLocks();
+}
+
+bool PropertyPane::locked(const QWidget* field) const
+{
+    if (!m_lesson)
+        return false;
+    switch (m_page) {
+    case Page::Body: {
+        const std::optional<model::BodyAttribute> attribute = bodyAttributeOf(field->objectName());
+        return attribute && m_lesson->bodyLock(m_index, *attribute);
+    }
+    case Page::World: {
+        const std::optional<model::WorldAttribute> attribute = worldAttributeOf(field->objectName());
+        return attribute && m_lesson->worldLock(*attribute);
+    }
+    case Page::Spring:
+    case Page::Joint:
+        break;
+    }
+    return m_lesson->connectionLock().has_value();
+}
+
+void PropertyPane::applyLocks()
+{
+    std::optional<QString> note;
+    if (m_lesson) {
+        switch (m_page) {
+        case Page::World:
+            note = m_lesson->worldNote();
+            break;
+        case Page::Body:
+            note = m_lesson->bodyNote(m_index);
+            break;
+        case Page::Spring:
+        case Page::Joint:
+            note = m_lesson->connectionLock();
+            break;
+        }
+    }
+    m_lockNote->setText(note.value_or(QString()));
+    m_lockNote->setVisible(note.has_value());
+
+    // Which of density and mass is typed in follows the mass mode; the other is computed.
+    const bool byMass = m_body.massSpec.mode == model::MassMode::Mass;
+    for (const std::unique_ptr<NumberField>& field : m_numbers) {
+        if (field->page != m_page)
+            continue;
+        bool readOnly = !field->apply || locked(field->edit);
+        if (field.get() == m_density)
+            readOnly = readOnly || byMass;
+        if (field.get() == m_mass)
+            readOnly = readOnly || !byMass;
+        field->edit->setReadOnly(readOnly);
+    }
+    if (m_page == Page::Body) {
+        m_name->setReadOnly(locked(m_name));
+        m_vertices->setEditTriggers(locked(m_vertices) ? QAbstractItemView::NoEditTriggers
+                                                       : QAbstractItemView::EditTriggers(m_vertexEditTriggers));
+        for (QWidget* widget : std::initializer_list<QWidget*>{m_addVertex, m_removeVertex, m_massMode, m_fixed, m_color, m_soft})
+            widget->setEnabled(!locked(widget));
+        m_softDensity->setEnabled(m_body.soft.has_value() && !locked(m_softDensity));
+    } else if (m_page == Page::World) {
+        m_integrator->setEnabled(!locked(m_integrator));
+    }
 }
 
 void PropertyPane::displayBody(bool replaceFocused)
@@ -1051,10 +1182,7 @@ void PropertyPane::displayBody(bool replaceFocused)
             fillVertexTable();
     }
 
-    const bool byMass = m_body.massSpec.mode == model::MassMode::Mass;
     m_massMode->setCurrentIndex(m_massMode->findData(static_cast<int>(m_body.massSpec.mode)));
-    m_density->edit->setReadOnly(byMass);
-    m_mass->edit->setReadOnly(!byMass);
     m_fixed->setChecked(m_body.fixed);
 
     const QColor color = toQColor(m_body.color);

@@ -31,6 +31,8 @@ class QTableWidgetItem;
 
 namespace impetus::view {
 
+class LessonSession;
+
 /// Shows and edits the attributes of what is selected: one body (name, size or vertex table,
 /// pose, velocities, density or mass, material, fixed, colour, soft mode), one spring (anchors,
 /// stiffness, damping, rest length), one joint (a pin's hinge where it is now, as a world point;
@@ -73,6 +75,14 @@ public:
     /// Where the body page's "Show vectors" boxes read whether body `name` shows arrows of a kind
     /// on the canvas (CanvasInstruments::showsBodyVector()); without it they show none ticked.
     void setBodyVectorsShown(std::function<bool(const std::string& name, VectorKind kind)> shown);
+
+    /// Obeys `session`'s locks from now on (nullptr: none): locked fields are read-only or
+    /// disabled, a note (object name "lockNote") says why, and edits they would make are refused.
+    /// The session must outlive the pane. Call showSelection() to show the change.
+    void setLessonSession(const LessonSession* session) { m_lesson = session; }
+
+    /// The text of the lock note: why fields are locked, or empty when none is.
+    QString lockNote() const;
 
 signals:
     /// The user changed body `index`; `body` is the whole new body (derived fields updated with
@@ -130,7 +140,7 @@ private:
     /// commitBody(), then the outcome in the message area and the body in the widgets.
     void applyBody(model::Body body, const QString& actionName);
     std::optional<QString> commitJoint(model::Joint joint, const QString& actionName);
-    void commitWorldSettings(const model::WorldSettings& settings, const QString& actionName);
+    std::optional<QString> commitWorldSettings(const model::WorldSettings& settings, const QString& actionName);
     /// Checks the polygon (model::validatePolygon) and commits the body with it, moved so that the
     /// vertices keep their world positions where they did not change.
     std::optional<QString> commitVertices(std::vector<Vec2> vertices, const QString& actionName);
@@ -157,6 +167,10 @@ private:
     void displaySpring();
     void displayJoint();
     void fillVertexTable();
+    /// True when the lesson locks what `field` (a widget of the shown page) edits.
+    bool locked(const QWidget* field) const;
+    /// Makes locked fields read-only or disabled, and shows why in the lock note.
+    void applyLocks();
     void refuse(const QString& message);
     /// refuse(*problem), or clearMessage() when there is no problem.
     void report(const std::optional<QString>& problem);
@@ -188,6 +202,8 @@ private:
     QLabel* m_title = nullptr;
     QLabel* m_note = nullptr;
     QLabel* m_message = nullptr;
+    QLabel* m_lockNote = nullptr; ///< why fields are locked by the lesson; hidden when none is
+    const LessonSession* m_lesson = nullptr;
     QWidget* m_pages = nullptr; ///< holds the four pages, one visible
     std::vector<QWidget*> m_pageWidgets; ///< indexed by Page
     std::vector<QFormLayout*> m_forms; ///< one per Page
@@ -197,6 +213,7 @@ private:
     QLineEdit* m_name = nullptr;
     QLineEdit* m_shapeType = nullptr;
     QTableWidget* m_vertices = nullptr;
+    int m_vertexEditTriggers = 0; ///< the vertex table's edit triggers when it is not locked
     QPushButton* m_addVertex = nullptr;
     QPushButton* m_removeVertex = nullptr;
     QComboBox* m_massMode = nullptr;

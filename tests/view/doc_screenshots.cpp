@@ -1,5 +1,5 @@
 // Takes the screenshots of docs/images/ that show the classroom features: the whole window, as a
-// user sees it, in projector mode and in German. Run by scripts/screenshots (under Xvfb, or on
+// user sees it, in projector mode, in German and Spanish, and with a lesson. Run by scripts/screenshots (under Xvfb, or on
 // Qt's offscreen platform); not a test.
 //
 //   doc_screenshots OUTPUT_DIR
@@ -11,6 +11,8 @@
 #include "view/simulation_runner.h"
 
 #include <QAction>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QApplication>
 #include <QDir>
 #include <QPixmap>
@@ -63,6 +65,30 @@ bool take(const Shot& shot, const QString& folder)
     return saved;
 }
 
+/// The incline lesson as a student sees it: the lesson panel beside the canvas, the first
+/// question answered and checked, and the block selected so the pane shows its locks.
+bool takeLesson(const QString& folder)
+{
+    view::setLanguageSetting(QString());
+    view::applyLanguage(*QCoreApplication::instance(), view::chosenLocale());
+    view::MainWindow window;
+    if (!window.openScene(QStringLiteral(":/examples/lesson-incline-friction.json")).isEmpty())
+        return false;
+    window.resize(kShotWidth, kShotHeight);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return false;
+    auto* answer = window.findChild<QLineEdit*>(QStringLiteral("lessonAnswer0"));
+    auto* check = window.findChild<QPushButton*>(QStringLiteral("lessonCheck0"));
+    if (!answer || !check)
+        return false;
+    QTest::keyClicks(answer, QStringLiteral("30"));
+    QTest::mouseClick(check, Qt::LeftButton);
+    window.document().setSelection(view::Selection{{2}, {}, {}});
+    QTest::qWait(200);
+    return window.grab().save(QDir(folder).filePath(QStringLiteral("lesson-incline.png")), "png");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -91,5 +117,10 @@ int main(int argc, char* argv[])
         }
         std::printf("%s\n", qPrintable(QDir(folder).filePath(QLatin1String(shot.file))));
     }
+    if (!takeLesson(folder)) {
+        std::fputs("doc_screenshots: could not take lesson-incline.png\n", stderr);
+        return 1;
+    }
+    std::printf("%s\n", qPrintable(QDir(folder).filePath(QStringLiteral("lesson-incline.png"))));
     return 0;
 }

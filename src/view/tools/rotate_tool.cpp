@@ -1,6 +1,7 @@
 #include "view/tools/rotate_tool.h"
 
 #include "view/canvas_view.h"
+#include "view/lesson_session.h"
 #include "view/view_constants.h"
 
 #include <QKeyEvent>
@@ -24,10 +25,13 @@ Vec2 rotated(const Vec2& v, double angle)
 
 } // namespace
 
-void RotationGesture::begin(SceneDocument& document, std::vector<int> bodies, const QPointF& scenePos)
+std::optional<QString> RotationGesture::begin(SceneDocument& document, std::vector<int> bodies,
+                                             const QPointF& scenePos, const LessonSession* lesson)
 {
     if (bodies.empty())
-        return;
+        return std::nullopt;
+    if (std::optional<QString> lock = poseLockOf(lesson, bodies, false, true))
+        return lock;
     m_bodies = std::move(bodies);
     m_startPoses.clear();
     m_pivot = Vec2::Zero();
@@ -40,6 +44,7 @@ void RotationGesture::begin(SceneDocument& document, std::vector<int> bodies, co
     m_start = scenePos;
     m_gesture = document.newGesture();
     m_active = true;
+    return std::nullopt;
 }
 
 void RotationGesture::update(SceneDocument& document, const QPointF& scenePos, bool snap)
@@ -94,7 +99,8 @@ void RotateTool::mousePress(const ToolEvent& event)
         bodies = {*hit};
         m_document.setSelection(Selection{bodies, {}, {}});
     }
-    m_rotation.begin(m_document, bodies, event.scenePos);
+    if (const std::optional<QString> lock = m_rotation.begin(m_document, bodies, event.scenePos, m_canvas.lessonSession()))
+        m_canvas.showMessage(event.scenePos, *lock);
 }
 
 void RotateTool::mouseMove(const ToolEvent& event)

@@ -6,9 +6,12 @@
 #include "view/scene_document.h"
 #include "view/tools/tool.h"
 
+#include <optional>
 #include <vector>
 
 namespace impetus::view {
+
+class LessonSession;
 
 /// One drag that turns some bodies rigidly about a pivot: each body's centre turns about the
 /// pivot and its angle grows by the same amount, the angle swept by the cursor about the pivot.
@@ -18,8 +21,10 @@ class RotationGesture {
 
 public:
     /// Starts turning bodies `bodies` of `document` about the mean of their centres, the cursor at
-    /// `scenePos`. Nothing happens for no bodies.
-    void begin(SceneDocument& document, std::vector<int> bodies, const QPointF& scenePos);
+    /// `scenePos`. Nothing happens for no bodies, or when `lesson` (if any) locks them; then the
+    /// lock's reason is returned.
+    std::optional<QString> begin(SceneDocument& document, std::vector<int> bodies, const QPointF& scenePos,
+                                 const LessonSession* lesson);
     /// Turns the bodies by the angle from the start to `scenePos`, in steps of
     /// constants::kRotationSnapDegrees when `snap`.
     void update(SceneDocument& document, const QPointF& scenePos, bool snap);
@@ -49,7 +54,8 @@ void paintRotation(QPainter& painter, double pixelsPerMetre, const QPointF& pivo
 
 /// The Rotate tool: press on a body (it becomes the selection unless it is selected already) or
 /// anywhere with bodies selected, and drag around their centre to turn them. Shift snaps the angle
-/// to constants::kRotationSnapDegrees. Escape during the drag turns them back.
+/// to constants::kRotationSnapDegrees. Escape during the drag turns them back. Bodies a lesson
+/// locks do not turn; the canvas says why.
 class RotateTool : public Tool {
 public:
     using Tool::Tool;

@@ -1,6 +1,7 @@
 #include "view/tools/select_tool.h"
 
 #include "view/canvas_view.h"
+#include "view/lesson_session.h"
 #include "view/view_constants.h"
 
 #include <QKeyEvent>
@@ -69,8 +70,14 @@ void SelectTool::mousePress(const ToolEvent& event)
         if (!contains(bodies, *body))
             return; // Shift took it out of the selection: nothing to drag.
         if (event.modifiers.testFlag(Qt::ControlModifier)) {
-            m_rotation.begin(m_document, bodies, event.scenePos);
-            m_mode = Mode::Rotating;
+            beginRotation(bodies, event.scenePos);
+            return;
+        }
+        // A body the lesson locks is selected (the pane shows it) but does not move; the canvas
+        // says why once the user tries to drag it.
+        if (std::optional<QString> lock = poseLockOf(m_canvas.lessonSession(), bodies, true, false)) {
+            m_lockMessage = std::move(*lock);
+            m_mode = Mode::Locked;
             return;
         }
         m_moving = bodies;
@@ -100,8 +107,7 @@ void SelectTool::mousePress(const ToolEvent& event)
         return;
     }
     if (event.modifiers.testFlag(Qt::ControlModifier) && !selection.bodies.empty()) {
-        m_rotation.begin(m_document, selection.bodies, event.scenePos);
-        m_mode = Mode::Rotating;
+        beginRotation(selection.bodies, event.scenePos);
         return;
     }
     m_selectionBefore = shift ? selection : Selection{};
@@ -109,10 +115,26 @@ void SelectTool::mousePress(const ToolEvent& event)
     m_mode = Mode::RubberBand;
 }
 
+void SelectTool::beginRotation(const std::vector<int>& bodies, const QPointF& scenePos)
+{
+    if (std::optional<QString> lock = m_rotation.begin(m_document, bodies, scenePos, m_canvas.lessonSession())) {
+        m_canvas.showMessage(scenePos, *lock);
+        m_mode = Mode::Idle;
+        return;
+    }
+    m_mode = Mode::Rotating;
+}
+
 void SelectTool::mouseMove(const ToolEvent& event)
 {
     m_cursor = event.scenePos;
     switch (m_mode) {
+    case Mode::Locked:
+        if (event.scenePos != m_pressPos) {
+            m_canvas.showMessage(event.scenePos, m_lockMessage);
+            m_mode = Mode::Idle;
+        }
+        break;
     case Mode::Moving:
         moveTo(event.scenePos);
         break;
@@ -181,6 +203,7 @@ bool SelectTool::keyPress(QKeyEvent* event)
         case Mode::RubberBand:
             m_document.setSelection(m_selectionBefore);
             break;
+        case Mode::Locked:
         case Mode::Idle:
             m_document.setSelection({});
             break;
@@ -207,6 +230,11 @@ bool SelectTool::keyPress(QKeyEvent* event)
         break;
     }
     const std::vector<int> bodies = m_document.selection().bodies;
+    if (const std::optional<QString> lock = poseLockOf(m_canvas.lessonSession(), bodies, true, false)) {
+        const model::BodyState& state = m_document.world().bodies[static_cast<std::size_t>(bodies.front())].state;
+        m_canvas.showMessage(toQPointF(state.position), *lock);
+        return true;
+    }
     std::vector<BodyPose> poses;
     for (const int i : bodies) {
         const model::BodyState& state = m_document.world().bodies[static_cast<std::size_t>(i)].state;

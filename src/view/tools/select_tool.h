@@ -15,7 +15,8 @@ namespace impetus::view {
 /// (snapped to the grid when snapping is on); Ctrl+drag turns them about their centre. The arrow
 /// keys nudge the selected bodies by a tenth of a grid spacing (Shift: a whole spacing). Escape
 /// during a drag gives it up (moved or turned bodies go back, a rubber band leaves the selection
-/// as it was); otherwise it clears the selection.
+/// as it was); otherwise it clears the selection. Bodies a lesson locks are selected but neither
+/// move, turn nor nudge; the canvas says why.
 class SelectTool : public Tool {
 public:
     using Tool::Tool;
@@ -30,9 +31,12 @@ public:
     Qt::CursorShape cursorShape() const override { return Qt::ArrowCursor; }
 
 private:
-    enum class Mode { Idle, Moving, RubberBand, Rotating };
+    /// Locked: a press on a body the lesson locks, until the release.
+    enum class Mode { Idle, Moving, RubberBand, Rotating, Locked };
 
     void moveTo(const QPointF& scenePos);
+    /// Starts turning `bodies`, or says why the lesson locks them.
+    void beginRotation(const std::vector<int>& bodies, const QPointF& scenePos);
 
     Mode m_mode = Mode::Idle;
     QPointF m_pressPos; ///< m
@@ -42,6 +46,7 @@ private:
     std::vector<BodyPose> m_startPoses;
     Selection m_selectionBefore; ///< for a Shift rubber band, which adds to it
     RotationGesture m_rotation;
+    QString m_lockMessage; ///< why the body pressed on is locked (Mode::Locked)
 };
 
 } // namespace impetus::view

@@ -1,0 +1,150 @@
+#include "view/lesson_session.h"
+
+#include "view/lesson_text.h"
+#include "view/scene_document.h"
+
+namespace impetus::view {
+
+LessonSession::LessonSession(SceneDocument& document, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_lastLesson(document.world().lesson)
+{
+    connect(&m_document, &SceneDocument::worldChanged, this, &LessonSession::onWorldChanged);
+    // A scene opened anew comes with its locks in force, whoever turned Lesson › Edit on before.
+    connect(&m_document, &SceneDocument::sceneReplaced, this, [this] { setEditing(false); });
+}
+
+const std::optional<model::Lesson>& LessonSession::lesson() const { return m_document.world().lesson; }
+
+void LessonSession::setEditing(bool on)
+{
+    if (on == m_editing)
+        return;
+    m_editing = on;
+    emit editingChanged(on);
+    emit locksChanged();
+}
+
+bool LessonSession::locksInForce() const { return lesson().has_value() && !m_editing; }
+
+void LessonSession::onWorldChanged()
+{
+    // Most world changes are edits of bodies; only a lesson that changed changes the locks.
+    if (lesson() == m_lastLesson)
+        return;
+    m_lastLesson = lesson();
+    emit locksChanged();
+}
+
+QString LessonSession::bodyName(int body) const
+{
+    const model::World& world = m_document.world();
+    if (body < 0 || static_cast<std::size_t>(body) >= world.bodies.size())
+        return {};
+    return QString::fromStdString(world.bodies[static_cast<std::size_t>(body)].name);
+}
+
+std::optional<QString> LessonSession::bodyLock(int body, model::BodyAttribute attribute) const
+{
+    if (!locksInForce() || (body >= 0 && lesson()->allows(model::BodyId{static_cast<std::uint32_t>(body)}, attribute)))
+        return std::nullopt;
+    return tr("Locked by the lesson: the %1 of “%2” can't be changed.").arg(attributeTitle(attribute), bodyName(body));
+}
+
+std::optional<QString> LessonSession::worldLock(model::WorldAttribute attribute) const
+{
+    if (!locksInForce() || lesson()->allows(attribute))
+        return std::nullopt;
+    return tr("Locked by the lesson: the %1 can't be changed.").arg(attributeTitle(attribute));
+}
+
+std::optional<QString> LessonSession::refusal(int body, const model::Body& before, const model::Body& after) const
+{
+    model::BodyAttributes changed = model::changedAttributes(before, after);
+    // A polygon's new vertices move its centroid, which is the body's position: a lesson that
+    // lets its shape change lets it move that much.
+    if (changed.test(static_cast<std::size_t>(model::BodyAttribute::ShapeSize)))
+        changed.reset(static_cast<std::size_t>(model::BodyAttribute::Position));
+    for (const model::BodyAttribute attribute : model::kBodyAttributes) {
+        if (!changed.test(static_cast<std::size_t>(attribute)))
+            continue;
+        if (std::optional<QString> lock = bodyLock(body, attribute))
+            return lock;
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> LessonSession::refusal(const model::WorldSettings& before,
+                                              const model::WorldSettings& after) const
+{
+    const model::WorldAttributes changed = model::changedAttributes(before, after);
+    for (const model::WorldAttribute attribute : model::kWorldAttributes) {
+        if (!changed.test(static_cast<std::size_t>(attribute)))
+            continue;
+        if (std::optional<QString> lock = worldLock(attribute))
+            return lock;
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> LessonSession::connectionLock() const
+{
+    if (!locksInForce())
+        return std::nullopt;
+    return tr("Locked by the lesson: springs and joints can't be changed.");
+}
+
+std::optional<QString> LessonSession::poseLock(const std::vector<int>& bodies, bool moves, bool turns) const
+{
+    // Several bodies turn about their common centre, so each of them moves too.
+    const bool needsPosition = moves || (turns && bodies.size() > 1);
+    for (const int body : bodies) {
+        if (needsPosition && bodyLock(body, model::BodyAttribute::Position))
+            return turns ? tr("Locked by the lesson: “%1” can't be turned.").arg(bodyName(body))
+                         : tr("Locked by the lesson: “%1” can't be moved.").arg(bodyName(body));
+        if (turns && bodyLock(body, model::BodyAttribute::Angle))
+            return tr("Locked by the lesson: “%1” can't be turned.").arg(bodyName(body));
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> LessonSession::removalLock(const Selection& selection) const
+{
+    if (!locksInForce() || selection.empty())
+        return std::nullopt;
+    return tr("Locked by the lesson: nothing can be deleted.");
+}
+
+std::optional<QString> LessonSession::drawingLock() const
+{
+    if (!locksInForce())
+        return std::nullopt;
+    return tr("Locked by the lesson: new bodies, springs and joints can't be added.");
+}
+
+std::optional<QString> LessonSession::bodyNote(int body) const
+{
+    if (!locksInForce() || body < 0)
+        return std::nullopt;
+    const model::BodyAttributes editable = lesson()->editable(model::BodyId{static_cast<std::uint32_t>(body)});
+    if (editable.none())
+        return tr("Locked by the lesson: this body can't be changed.");
+    return tr("Locked by the lesson. You may change its %1.").arg(attributeList(editable));
+}
+
+std::optional<QString> LessonSession::worldNote() const
+{
+    if (!locksInForce())
+        return std::nullopt;
+    if (lesson()->editableWorld.none())
+        return tr("Locked by the lesson: the world settings can't be changed.");
+    return tr("Locked by the lesson. You may change the %1.").arg(attributeList(lesson()->editableWorld));
+}
+
+std::optional<QString> poseLockOf(const LessonSession* session, const std::vector<int>& bodies, bool moves, bool turns)
+{
+    return session ? session->poseLock(bodies, moves, turns) : std::nullopt;
+}
+
+} // namespace impetus::view
