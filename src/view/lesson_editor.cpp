@@ -1,5 +1,7 @@
 #include "view/lesson_editor.h"
 
+#include "view/message_label.h"
+
 #include "view/lesson_commands.h"
 #include "view/lesson_session.h"
 #include "view/lesson_text.h"
@@ -35,8 +37,6 @@ constexpr int kEditorDigits = 12;
 /// loose enough to be noticed and changed.
 constexpr double kNewQuestionTolerance = 1.0;
 
-/// Colour of refusal messages: the attribute pane's dark red.
-const QColor kMessageColor{0xb9, 0x1c, 0x1c};
 
 /// Columns of the questions table.
 enum Column { PromptColumn, AnswerColumn, UnitColumn, ToleranceColumn, ColumnCount };
@@ -129,15 +129,7 @@ LessonEditor::LessonEditor(LessonSession& session, QWidget* parent)
     connect(m_addQuestion, &QPushButton::clicked, this, &LessonEditor::addQuestion);
     connect(m_removeQuestion, &QPushButton::clicked, this, &LessonEditor::removeQuestion);
 
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("lessonEditorMessage"));
-    m_message->setAccessibleName(tr("Message"));
-    m_message->setWordWrap(true);
-    m_message->setTextFormat(Qt::PlainText);
-    QPalette palette = m_message->palette();
-    palette.setColor(QPalette::WindowText, kMessageColor);
-    m_message->setPalette(palette);
-    m_message->hide();
+    m_message = makeMessageLabel(QStringLiteral("lessonEditorMessage"), tr("Message"), this);
     layout->addWidget(m_message);
 
     connect(&m_session, &LessonSession::locksChanged, this, &LessonEditor::refresh);

@@ -1,5 +1,7 @@
 #include "view/property_pane.h"
 
+#include "view/message_label.h"
+
 #include "controller/diagnostics.h"
 #include "model/polygon.h"
 #include "view/lesson_session.h"
@@ -43,9 +45,6 @@ constexpr int kSignificantDigits = 6;
 /// Degrees per radian: angles are shown in degrees, which students read, and kept in radians.
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
-/// Colour of refusal messages: a dark red (#b91c1c) that reads as an error and keeps a contrast
-/// above 4.5:1 on a light window background.
-const QColor kMessageColor{0xb9, 0x1c, 0x1c};
 
 /// Side of the colour swatch on the colour button, px.
 constexpr int kSwatchSizePx = 14;
@@ -206,15 +205,7 @@ PropertyPane::PropertyPane(QWidget* parent)
     m_lockNote->hide();
     layout->addWidget(m_lockNote);
 
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("message"));
-    m_message->setAccessibleName(tr("Message"));
-    m_message->setWordWrap(true);
-    m_message->setTextFormat(Qt::PlainText);
-    QPalette palette = m_message->palette();
-    palette.setColor(QPalette::WindowText, kMessageColor);
-    m_message->setPalette(palette);
-    m_message->hide();
+    m_message = makeMessageLabel(QStringLiteral("message"), tr("Message"), this);
     layout->addWidget(m_message);
 
     m_pages = new QWidget;
@@ -370,15 +361,7 @@ void PropertyPane::buildWorldPage()
               editWorld([](model::WorldSettings& s, double v) { s.drag = v; }, tr("Change drag")));
 
     // Legal settings outside what the engine is tested for (issue 17): said where they are set.
-    m_worldWarnings = new QLabel;
-    m_worldWarnings->setObjectName(QStringLiteral("worldWarnings"));
-    m_worldWarnings->setAccessibleName(tr("Warnings"));
-    m_worldWarnings->setWordWrap(true);
-    m_worldWarnings->setTextFormat(Qt::PlainText);
-    QPalette palette = m_worldWarnings->palette();
-    palette.setColor(QPalette::WindowText, kMessageColor);
-    m_worldWarnings->setPalette(palette);
-    m_worldWarnings->hide();
+    m_worldWarnings = makeMessageLabel(QStringLiteral("worldWarnings"), tr("Warnings"));
     form->addRow(m_worldWarnings);
 }
 
