@@ -1,5 +1,5 @@
 // Not a test: the pictures of docs/app.md's probe and tool icons, taken from the real window driven
-// as a user would (keys and clicks). scripts/screenshots-instruments runs it under Xvfb.
+// as a user would (keys and clicks). scripts/screenshots runs it under Xvfb.
 // Usage: instruments_screenshots OUTPUT_DIRECTORY
 
 #include "test_settings.h"
