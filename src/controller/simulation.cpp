@@ -327,12 +327,19 @@ void Simulation::finishBodyPosition(std::size_t i, Scalar h)
         return;
     const model::BodyState& start = m_startStates[i];
     if (sb.hadContactForce) {
-        // Until its first impact the body moved with its start velocity, then with its final
-        // one. (Written with the final velocity alone, an impact that a contact force then
-        // cancels would still move the body.)
-        const Scalar tau = sb.hadImpact ? sb.firstImpactTau : 0.0;
-        s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity);
-        s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity);
+        // Each impact changes the velocity at its own time τₖ·h, and the contact forces and
+        // joints after the last one, at T·h (they answer the impacts: written with the final
+        // velocity alone, an impact that a contact force then cancels would still move the body):
+        //   x = x₀ + h·v₀ + h·Σₖ (1 − τₖ)·Δvₖ + h·(1 − T)·Δv_contacts
+        //     = x₀ + h·(T·v₀ + (1 − T)·v) + h·(T·Σₖ Δvₖ − Σₖ τₖ·Δvₖ).
+        // The contact impulses took their lever arms from where the body is at T·h
+        // (SolverBody::impulseOrigin), which keeps the angular momentum (docs/physics.md,
+        // "Conservation"). A body without impacts has T = 0: x = x₀ + h·v.
+        const Scalar tau = sb.hadImpact ? sb.lastImpactTau : 0.0;
+        s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity) +
+                     h * (tau * sb.impactVelocity - sb.impactLateVelocity);
+        s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity) +
+                  h * (tau * sb.impactAngularVelocity - sb.impactLateAngularVelocity);
     } else if (sb.hadImpact) {
         // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
         s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);

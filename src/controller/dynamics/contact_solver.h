@@ -265,6 +265,20 @@ private:
     /// Where body `index` is at τ·h, moving straight with its velocity and the impacts so far.
     Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
 
+    /// After the impacts: each struck body's impulse origin (its place at its last impact), and
+    /// the lever arms of every contact of a struck body taken from there (repacked into its batch
+    /// lane in a batched step).
+    void moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h);
+    /// The group whose batches hold lane `laneIndex`.
+    std::size_t groupOfLane(std::uint32_t laneIndex) const
+    {
+        const std::size_t batch = laneIndex / kBatchLanes;
+        std::size_t g = 0;
+        while (g + 1 < m_groups.size() && batch >= m_batchGroupStart[g + 1])
+            ++g;
+        return g;
+    }
+
     /// Applies an impact impulse (−impulse on A at rA, +impulse on B at rB) at time τ·h and
     /// records it for the bodies' positions at later times.
     void applyImpactImpulse(const ContactConstraint& c, const Vec2& rA, const Vec2& rB, Scalar tau,

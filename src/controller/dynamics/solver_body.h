@@ -21,8 +21,17 @@ struct alignas(64) SolverBody {
     /// velocity change that must not count for the time before the impact (m/s, rad/s).
     Vec2 impactLateVelocity = Vec2::Zero();
     Scalar impactLateAngularVelocity = 0;
+    /// The impacts' whole velocity change this step, Σ Δv (m/s, rad/s).
+    Vec2 impactVelocity = Vec2::Zero();
+    Scalar impactAngularVelocity = 0;
     bool hadImpact = false; ///< an impact impulse acted on this body this step
-    Scalar firstImpactTau = 1; ///< the earliest impact on this body, as a fraction of the step
+    /// The latest impact on this body, as a fraction of the step: its contact and joint impulses
+    /// act at that time, after the impacts they answer (Simulation::finishBodyPosition).
+    Scalar lastImpactTau = 0;
+    /// Where the body is at lastImpactTau·h (ContactSolver::solveImpacts), m: the contact and
+    /// joint impulses take their lever arms from there, so that each acts at one point in space
+    /// on both its bodies and keeps the angular momentum (docs/physics.md, "Conservation").
+    Vec2 impulseOrigin = Vec2::Zero();
     bool hadContactForce = false; ///< a contact-force or joint impulse acted on this body this step
     /// The material its contacts mix (its own, or for a soft body's ellipse the soft body's): kept
     /// here because building a contact would otherwise fetch it from the large model::Body.
@@ -38,6 +47,10 @@ inline Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec
 
 /// A body that can move (a fixed body has zero inverse mass and inertia).
 inline bool movable(const SolverBody& body) { return body.invMass > 0 || body.invInertia > 0; }
+
+/// Where a body's contact and joint impulses take their lever arms from this step: its place at
+/// its last impact, or at the start of the step if it had none, m.
+inline const Vec2& impulseOrigin(const SolverBody& body) { return body.hadImpact ? body.impulseOrigin : body.position; }
 
 /// Applies the impulse P (N·s) at the contact: −P on A at rA, +P on B at rB. A fixed body is not
 /// written to (for a finite P its velocity would not change anyway, v − 0·P = v), so the two
