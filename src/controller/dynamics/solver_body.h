@@ -4,6 +4,10 @@
 
 #include "model/scalar.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace impetus::controller {
 
 /// A body as the constraint solvers see it: velocity, pose and inverse mass properties. Fixed
@@ -80,6 +84,50 @@ inline void applyPositionImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, c
         b.position += b.invMass * impulse;
         b.angle += b.invInertia * cross(rB, impulse);
     }
+}
+
+/// Takes back what a position correction did to the angular momentum. Moving A by −P/m_A and B
+/// by +P/m_B (a linear position impulse P, m·kg) while their velocities stay changes the angular
+/// momentum about any point by `change` = P × (v_B − v_A) (kg·m²/s). This turns the pair's relative
+/// velocity w = v_B − v_A, at its present length, by the angle φ that gives μ·r × w back its value
+/// less that change (r = x_B − x_A, μ the reduced mass): the pair's momentum and kinetic energy
+/// stay exactly, and the spins are untouched. Of the two angles that do, the one that leaves the
+/// pair separating faster along the push P (`push`), among those under a quarter turn, so that the
+/// turn never sends a pushed pair back into contact; else the smaller. Where no turn can
+/// (|μ·r × w − change| > μ·|r|·|w|: a pair pulled closer while it turns about itself, as a pin
+/// does, must spin faster, like a skater pulling in her arms; or w = 0) it adds the smallest
+/// relative velocity that does, across r. Both bodies must have mass (a fixed body takes any
+/// angular momentum anyway).
+inline void restoreAngularMomentum(SolverBody& a, SolverBody& b, Scalar change, const Vec2& push)
+{
+    const Scalar reduced = 1 / (a.invMass + b.invMass);
+    const Vec2 r = b.position - a.position;
+    const Vec2 w = b.velocity - a.velocity;
+    const Scalar along = r.dot(w);
+    const Scalar across = cross(r, w);
+    const Scalar size = std::hypot(along, across);
+    const Scalar target = across - change / reduced;
+    const auto apply = [&](const Vec2& dw) {
+        a.velocity -= (reduced * a.invMass) * dw;
+        b.velocity += (reduced * b.invMass) * dw;
+    };
+    if (!(std::abs(target) <= size)) {
+        const Scalar squared = r.squaredNorm();
+        if (squared > 0)
+            apply(((target - across) / squared) * Vec2(-r.y(), r.x())); // r × (−r_y, r_x) = |r|²
+        return;
+    }
+    // r × (w turned by φ) = across·cos φ + along·sin φ = size·sin(φ + ψ), ψ = atan2(across, along).
+    const Scalar wanted = std::asin(target / size);
+    const Scalar psi = std::atan2(across, along);
+    const auto wrap = [](Scalar angle) { return std::remainder(angle, 2 * std::numbers::pi); };
+    const Scalar first = wrap(wanted - psi);
+    const Scalar second = wrap(std::numbers::pi - wanted - psi);
+    const Scalar quarter = std::numbers::pi / 2;
+    Scalar turn = std::abs(first) <= std::abs(second) ? first : second;
+    if (std::abs(first) < quarter && std::abs(second) < quarter)
+        turn = rotate(w, first).dot(push) >= rotate(w, second).dot(push) ? first : second;
+    apply(rotate(w, turn) - w);
 }
 
 /// The effective mass 1/K (kg) for an impulse along `direction` at rA, rB; 0 when nothing can move.
