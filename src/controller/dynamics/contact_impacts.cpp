@@ -220,19 +220,30 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         };
         std::array<ImpactPoint, 2> points{};
         int count = 0;
+        // One time for the whole impact: the first of its points to meet (a two-point impact is
+        // one simultaneous collision), and never before an impact either body has already taken
+        // this step. Each body's impulses then come in the order of their times, so the place
+        // each acts from (positionAt) already holds every impulse before it, and angular momentum
+        // stays exact however the impacts were ordered (fastest approach first).
+        Scalar tau = 1;
         for (int i = 0; i < c.pointCount; ++i) {
             const auto ui = static_cast<std::size_t>(i);
-            const ContactConstraintPoint& p = c.points[ui];
-            const Approach ap = approachOf(c, p, bodies, h);
+            const Approach ap = approachOf(c, c.points[ui], bodies, h);
             if (ap.tau < 0)
                 continue;
-            const Vec2 centreA = positionAt(c.bodyA, a, ap.tau, h);
-            const Vec2 centreB = positionAt(c.bodyB, b, ap.tau, h);
-            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
             ImpactPoint& ip = points[static_cast<std::size_t>(count++)];
             ip.index = ui;
-            ip.tau = ap.tau;
             ip.velocity = ap.velocity;
+            tau = std::min(tau, ap.tau);
+        }
+        tau = std::max({tau, a.lastImpactTau, b.lastImpactTau});
+        const Vec2 centreA = positionAt(c.bodyA, a, tau, h);
+        const Vec2 centreB = positionAt(c.bodyB, b, tau, h);
+        for (int i = 0; i < count; ++i) {
+            ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const ContactConstraintPoint& p = c.points[ip.index];
+            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
+            ip.tau = tau;
             ip.rA = common - centreA;
             ip.rB = common - centreB;
         }
@@ -304,7 +315,43 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             }
         }
     }
+    if (resolved > 0)
+        moveArmsToImpactTimes(bodies, h);
     return resolved;
+}
+
+void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h)
+{
+    // A struck body's contact impulses act after its last impact (Simulation::finishBodyPosition),
+    // so their lever arms are taken from where it is then. Both bodies of a contact then push at
+    // one point in space, each at its own time, which keeps the angular momentum about any point
+    // to rounding (docs/physics.md, "Conservation"). The arms move by how far the body travelled
+    // before the impact, millimetres: the contact's geometry is otherwise the start's.
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        SolverBody& body = bodies[i];
+        if (body.hadImpact)
+            body.impulseOrigin = positionAt(i, body, body.lastImpactTau, h);
+    }
+    for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
+        ContactConstraint& c = m_constraints[ci];
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        if (!a.hadImpact && !b.hadImpact)
+            continue;
+        const Vec2 t = tangentOf(c.normal);
+        const Vec2 originA = impulseOrigin(a);
+        const Vec2 originB = impulseOrigin(b);
+        for (std::size_t k = 0; k < static_cast<std::size_t>(c.pointCount); ++k) {
+            ContactConstraintPoint& p = c.points[k];
+            const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
+            p.rA = common - originA;
+            p.rB = common - originB;
+            p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
+            p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
+        }
+        if (m_batched)
+            packLane(bodies, h, groupOfLane(m_laneOf[ci]), m_laneOf[ci]);
+    }
 }
 
 Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
@@ -323,14 +370,21 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     SolverBody& a = bodies[c.bodyA];
     SolverBody& b = bodies[c.bodyB];
     applyImpulse(a, b, rA, rB, impulse);
-    a.firstImpactTau = std::min(a.firstImpactTau, tau);
-    b.firstImpactTau = std::min(b.firstImpactTau, tau);
     const Vec2 dvA = -a.invMass * impulse;
     const Vec2 dvB = b.invMass * impulse;
+    const Scalar dwA = -a.invInertia * cross(rA, impulse);
+    const Scalar dwB = b.invInertia * cross(rB, impulse);
+    for (auto [body, dv, dw] : {std::tuple{&a, dvA, dwA}, std::tuple{&b, dvB, dwB}}) {
+        if (!movable(*body))
+            continue; // a fixed body's motion never changes: its impacts keep no time
+        body->lastImpactTau = std::max(body->lastImpactTau, tau);
+        body->impactVelocity += dv;
+        body->impactAngularVelocity += dw;
+    }
     a.impactLateVelocity += tau * dvA;
-    a.impactLateAngularVelocity -= tau * a.invInertia * cross(rA, impulse);
+    a.impactLateAngularVelocity += tau * dwA;
     b.impactLateVelocity += tau * dvB;
-    b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
+    b.impactLateAngularVelocity += tau * dwB;
     for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
         if (!movable(bodies[body]))
             continue; // a fixed body's motion never changes: nothing to remember

@@ -180,6 +180,14 @@ public:
     /// since this solver's last pass (the first pass of a step, or joints in between). Returns
     /// true when every penetration is within the slop.
     bool solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere);
+    /// Before a substep's position passes: clears what they will have pushed.
+    void beginPositions();
+    /// After them: measures, contact by contact, what their moving the bodies did to the angular
+    /// momentum, P × (v_B − v_A). Contacts with a fixed body are left alone.
+    void measurePushes(std::span<const SolverBody> bodies);
+    /// Then takes each back by turning the pushed pair's relative velocity
+    /// (restoreAngularMomentum; docs/physics.md, "Conservation").
+    void takeBackPushes(std::span<SolverBody> bodies) const;
 
     /// The constraints of this step, with their impact impulses. Their normal and tangent impulses
     /// are the warm start's: the passes' final ones are in the records (swapRecords).
@@ -265,10 +273,36 @@ private:
     /// Where body `index` is at τ·h, moving straight with its velocity and the impacts so far.
     Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
 
+    /// After the impacts: each struck body's impulse origin (its place at its last impact), and
+    /// the lever arms of every contact of a struck body taken from there (repacked into its batch
+    /// lane in a batched step).
+    void moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h);
+    /// The group whose batches hold lane `laneIndex`.
+    std::size_t groupOfLane(std::uint32_t laneIndex) const
+    {
+        const std::size_t batch = laneIndex / kBatchLanes;
+        std::size_t g = 0;
+        while (g + 1 < m_groups.size() && batch >= m_batchGroupStart[g + 1])
+            ++g;
+        return g;
+    }
+
     /// Applies an impact impulse (−impulse on A at rA, +impulse on B at rB) at time τ·h and
     /// records it for the bodies' positions at later times.
     void applyImpactImpulse(const ContactConstraint& c, const Vec2& rA, const Vec2& rB, Scalar tau,
                             const Vec2& impulse, std::span<SolverBody> bodies);
+
+    /// A pair the position passes pushed, and the angular momentum that changed, kg·m²/s.
+    struct PushedPair {
+        std::uint32_t bodyA;
+        std::uint32_t bodyB;
+        Scalar change;
+        Vec2 push; ///< the linear position impulse on B, m·kg
+    };
+    /// An unbatched step's linear position impulse per constraint, summed over its points and the
+    /// passes, m·kg (a batched step keeps them in its position batches).
+    std::vector<Vec2> m_pushes;
+    std::vector<PushedPair> m_pushedPairs; ///< measurePushes's findings
 
     std::vector<ContactConstraint> m_constraints;
     /// This step's contact records (see swapRecords), begun while each constraint is built and

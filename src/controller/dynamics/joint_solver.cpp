@@ -62,10 +62,21 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         c.rA = rotate(c.localA, a.angle);
         c.rB = rotate(c.localB, b.angle);
         c.offset = b.position + c.rB - a.position - c.rA;
+        // Impulses act from where each body is when they act: at the start, or after a struck
+        // body's last impact (SolverBody::impulseOrigin).
+        const Vec2& originA = impulseOrigin(a);
+        const Vec2& originB = impulseOrigin(b);
         if (c.type == model::JointType::Pin) {
+            if (c.bodyB != kWorld) {
+                const Vec2 common = 0.5 * (originA + c.rA + originB + c.rB);
+                c.rA = common - originA;
+                c.rB = common - originB;
+            }
             c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB));
         } else {
-            const Vec2 d = b.position + c.rB - a.position - c.rA;
+            // Along the line between the anchors as the impulses see them, which keeps the
+            // angular momentum exactly.
+            const Vec2 d = originB + c.rB - originA - c.rA;
             const Scalar distance = d.norm();
             // A rod squeezed to a point has no direction this instant; push along x until it
             // opens up again.
@@ -114,10 +125,43 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
     }
 }
 
+void JointSolver::beginPositions()
+{
+    for (Constraint& c : m_joints)
+        c.push = Vec2::Zero();
+}
+
+void JointSolver::measurePushes(std::span<const SolverBody> bodies)
+{
+    m_changes.clear();
+    for (const Constraint& c : m_joints) {
+        if (c.bodyB == kWorld || c.push.isZero())
+            continue;
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        if (a.invMass > 0 && b.invMass > 0)
+            m_changes.push_back(cross(c.push, Vec2(b.velocity - a.velocity)));
+        else
+            m_changes.push_back(0);
+    }
+}
+
+void JointSolver::takeBackPushes(std::span<SolverBody> bodies) const
+{
+    std::size_t next = 0;
+    for (const Constraint& c : m_joints) {
+        if (c.bodyB == kWorld || c.push.isZero())
+            continue;
+        const Scalar change = m_changes[next++];
+        if (change != 0)
+            restoreAngularMomentum(bodies[c.bodyA], bodies[c.bodyB], change, c.push);
+    }
+}
+
 bool JointSolver::solvePositions(std::span<SolverBody> bodies)
 {
     Scalar worst = 0;
-    for (const Constraint& c : m_joints) {
+    for (Constraint& c : m_joints) {
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
         const Vec2 rA = rotate(c.localA, a.angle);
@@ -131,6 +175,7 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
                 error *= constants::kMaxPositionCorrection / size;
             const Vec2 impulse = -(safeInverse(pointK(a, b, rA, rB)) * error);
             applyPositionImpulse(a, b, rA, rB, impulse);
+            c.push += impulse;
         } else {
             const Scalar distance = d.norm();
             if (!(distance > 0))
@@ -142,8 +187,11 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
             const Scalar rnA = cross(rA, u);
             const Scalar rnB = cross(rB, u);
             const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
-            if (k > 0)
-                applyPositionImpulse(a, b, rA, rB, Vec2((-error / k) * u));
+            if (k > 0) {
+                const Vec2 impulse = (-error / k) * u;
+                applyPositionImpulse(a, b, rA, rB, impulse);
+                c.push += impulse;
+            }
         }
     }
     return worst <= constants::kLinearSlop;
