@@ -246,6 +246,7 @@ QString bodyName(const model::World& world, int index)
 SatExplainer::SatExplainer(CanvasView& canvas, SceneDocument& document, QObject* parent)
     : QObject(parent)
     , m_canvas(canvas)
+    , m_canvasAlive(&canvas)
     , m_document(document)
 {
     connect(&m_document, &SceneDocument::stepped, this, [this] {
@@ -259,7 +260,11 @@ SatExplainer::SatExplainer(CanvasView& canvas, SceneDocument& document, QObject*
     connect(&m_document, &SceneDocument::sceneReplaced, this, &SatExplainer::close);
 }
 
-SatExplainer::~SatExplainer() { close(); }
+SatExplainer::~SatExplainer()
+{
+    if (m_canvasAlive)
+        close();
+}
 
 bool SatExplainer::open()
 {

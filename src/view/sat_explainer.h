@@ -6,6 +6,7 @@
 #include "controller/collision/pair_trace.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <cstddef>
@@ -68,6 +69,9 @@ private:
     QString describe() const;
 
     CanvasView& m_canvas;
+    /// Null once the canvas is gone (the window deletes it before this explainer): the drawing and
+    /// the panel went with it, and there is nothing left to close.
+    QPointer<QObject> m_canvasAlive;
     SceneDocument& m_document;
     bool m_open = false;
     int m_bodyA = 0;
