@@ -56,7 +56,9 @@ CollisionInspector::CollisionInspector(SceneDocument& document, Timeline& timeli
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_list);
     splitter->addWidget(m_formula);
-    splitter->setStretchFactor(1, 2);
+    // The formula needs the room; a few rows of the log are enough to pick from.
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 4);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_status);

@@ -28,8 +28,8 @@ inline constexpr double kExplainPointPx = 5.0;
 inline constexpr double kExplainNormalPx = 28.0;
 /// Arrow head size, px.
 inline constexpr double kExplainArrowHeadPx = 8.0;
-/// How far past the pair's bounding circle the projection line is drawn, as a fraction of its radius.
-inline constexpr double kExplainAxisOffset = 0.35;
+/// How far beside the pair the projection line is drawn, px: clear of both pieces' outlines.
+inline constexpr double kExplainAxisClearancePx = 40.0;
 /// Gap between the two intervals drawn on the projection line, px (A on one side, B on the other).
 inline constexpr double kExplainIntervalGapPx = 6.0;
 /// Millimetres per metre: the explainers give lengths in mm, the scale of a contact's overlap.

@@ -166,11 +166,19 @@ private:
                         const controller::TracedAxis& axis) const
     {
         const Vec2 n = axis.normal;
-        const Vec2 t(-n.y(), n.x());
+        // The line runs beside the pair on its right (or upper) side, away from the text panel in
+        // the top left corner, just clear of both pieces.
+        Vec2 t(-n.y(), n.x());
+        if (t.x() < 0 || (t.x() == 0 && t.y() < 0))
+            t = -t;
         const Vec2 centre = 0.5 * (pair.a.center + pair.b.center);
-        const Scalar radius = std::max(reach(pair.a) + (pair.a.center - centre).norm(),
-                                       reach(pair.b) + (pair.b.center - centre).norm());
-        const Vec2 base = centre + (1 + constants::kExplainAxisOffset) * radius * t;
+        Scalar extent = 0;
+        for (const controller::TracedPiece* piece : {&pair.a, &pair.b}) {
+            extent = std::max(extent, t.dot(piece->center - centre) + std::max(piece->radiusX, piece->radiusY));
+            for (const Vec2& v : piece->vertices)
+                extent = std::max(extent, t.dot(v - centre));
+        }
+        const Vec2 base = centre + (extent + constants::kExplainAxisClearancePx * m_metresPerPx) * t;
         const auto at = [&](Scalar s, Scalar sidePx) {
             return base + (s - n.dot(base)) * n + sidePx * m_metresPerPx * t;
         };
