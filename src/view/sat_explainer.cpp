@@ -13,7 +13,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QPainter>
-#include <QPainterPath>
+#include <QtMath>
 
 #include <algorithm>
 #include <cmath>
@@ -116,7 +116,7 @@ private:
         } else {
             painter.save();
             painter.translate(toPoint(piece.center));
-            painter.rotate(std::atan2(piece.s, piece.c) * 180.0 / M_PI);
+            painter.rotate(qRadiansToDegrees(std::atan2(piece.s, piece.c)));
             const Scalar ry = piece.kind == controller::ColliderPiece::Kind::Circle ? piece.radiusX : piece.radiusY;
             painter.drawEllipse(QPointF(0, 0), piece.radiusX, ry);
             painter.restore();

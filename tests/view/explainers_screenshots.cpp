@@ -15,6 +15,7 @@
 #include <QDockWidget>
 #include <QListWidget>
 #include <QTest>
+#include <QtMath>
 
 #include <cmath>
 #include <cstdio>
@@ -63,7 +64,7 @@ bool separatingAxes(const QDir& directory)
     model::Body crate = view::test::makeBody("crate", model::Box{1.6, 1.0}, Vec2(0, 0.5));
     crate.color = model::Color{0x9e, 0xc5, 0xe8};
     model::Body tipped = view::test::makeBody("tipped box", model::Box{1.0, 0.6}, Vec2(0.55, 1.40));
-    tipped.state.angle = 20.0 * M_PI / 180.0;
+    tipped.state.angle = qDegreesToRadians(20.0);
     tipped.color = model::Color{0xf5, 0xc1, 0x8c};
     tipped.updateDerived();
     world.bodies.push_back(crate);

@@ -18,6 +18,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 using namespace impetus;
@@ -175,7 +176,7 @@ void ExplainersTest::rotatedCornerIntoAFace()
     const Scalar h = std::sqrt(0.5);
     model::World world = pairWorld(test::makeBody("ground", model::Box{4, 1}, Vec2(0, -0.5), true),
                                    test::makeBody("diamond", model::Box{1, 1}, Vec2(0, h - 0.1)));
-    world.bodies[1].state.angle = M_PI / 4;
+    world.bodies[1].state.angle = std::numbers::pi / 4;
     MainWindow window;
     SatExplainer* explainer = openOn(window, world, Vec2(-1.5, -0.5), Vec2(0, h));
     QVERIFY(explainer != nullptr);
