@@ -88,6 +88,10 @@ public:
     /// The contacts that began in the last step (the collision log's new entries).
     const std::vector<CollisionEvent>& events() const { return m_events; }
 
+    /// Appends a record of every impact from the next step on to `log` (impact_record.h), or
+    /// stops recording (nullptr, the default). The caller keeps `log` alive.
+    void setImpactLog(std::vector<ImpactRecord>* log) { m_contactSolver.setImpactLog(log); }
+
     /// The substeps of the last step and why (one, with no message, without soft bodies).
     const SoftStability& stability() const { return m_stability; }
 

@@ -5,6 +5,7 @@
 #include "controller/soft/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
+#include "view/explain_menu.h"
 #include "view/graph_panel.h"
 #include "view/language.h"
 #include "view/lesson_dock.h"
@@ -127,6 +128,8 @@ MainWindow::MainWindow(QWidget* parent)
     addLanguageMenu(*this);
     // The Lesson menu and dock; the canvas, the pane and Delete obey the lesson's locks.
     m_lesson = addLessons(*this);
+    // The Explain menu: Separating Axes and the Collision Inspector.
+    addExplainers(*this);
 
     m_canvas->setFocus();
     updateTitle();

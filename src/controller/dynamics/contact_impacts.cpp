@@ -275,6 +275,27 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         const Eigen::Vector2d x = solveTwoPointLcp(k, count == 2 ? Eigen::Matrix2d(k.inverse()) : k, bias, count);
 
         const Vec2 t = tangentOf(c.normal);
+        // The collision inspector's record (none in a normal step): the state before the impulses.
+        ImpactRecord* record = nullptr;
+        if (m_impactLog != nullptr) {
+            record = &m_impactLog->emplace_back();
+            record->ownerA = c.ownerA;
+            record->ownerB = c.ownerB;
+            record->normal = c.normal;
+            record->tangent = t;
+            record->restitution = c.restitution;
+            record->friction = c.friction;
+            record->count = count;
+            record->beforeA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->beforeB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
+            for (int i = 0; i < count; ++i) {
+                const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+                ImpactPointRecord& rp = record->points[static_cast<std::size_t>(i)];
+                rp = {ip.rA, ip.rB, ip.tau, ip.velocity, ip.velocity - bias(i), x(i)};
+                for (int j = 0; j < count; ++j)
+                    record->k[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = k(i, j);
+            }
+        }
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             ContactConstraintPoint& p = c.points[ip.index];
@@ -289,13 +310,30 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                 m_records[best].touching = true;
         }
 
+        if (record != nullptr) {
+            record->afterNormalA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->afterNormalB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
+        }
+
         // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const Scalar vt = relativeVelocity(a, b, ip.rA, ip.rB).dot(t);
             const Scalar limit = c.friction * x(i);
-            const Scalar jt = std::clamp(-vt * effectiveMass(a, b, ip.rA, ip.rB, t), -limit, limit);
+            const Scalar tangentMass = effectiveMass(a, b, ip.rA, ip.rB, t);
+            const Scalar jt = std::clamp(-vt * tangentMass, -limit, limit);
             applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, jt * t, bodies);
+            if (record != nullptr) {
+                ImpactPointRecord& rp = record->points[static_cast<std::size_t>(i)];
+                rp.tangentSpeed = vt;
+                rp.tangentMass = tangentMass;
+                rp.frictionLimit = limit;
+                rp.frictionImpulse = jt;
+            }
+        }
+        if (record != nullptr) {
+            record->afterA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->afterB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
         }
         // Only a body that can move has been struck (a fixed body's contacts keep their status).
         for (SolverBody* body : {&a, &b}) {

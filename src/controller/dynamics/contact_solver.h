@@ -15,6 +15,7 @@
 
 #include "controller/collision/collision_types.h"
 #include "controller/dynamics/contact_batches.h"
+#include "controller/dynamics/impact_record.h"
 #include "controller/integration/force_model.h"
 #include "controller/dynamics/solver_body.h"
 #include "controller/task_pair.h"
@@ -156,6 +157,9 @@ public:
     /// (contact_batches.h); constants::kBatchMinConstraints unless set. Tests set 0 to batch every
     /// world, or SIZE_MAX to batch none.
     void setBatchMinConstraints(std::size_t count) { m_batchMinConstraints = count; }
+    /// Appends a record of every impact solveImpacts() resolves to `log` (impact_record.h), or
+    /// records nothing (nullptr, the default). The caller keeps `log` alive.
+    void setImpactLog(std::vector<ImpactRecord>* log) { m_impactLog = log; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
     /// Starts the velocity passes: packs the constraints for them (unless prepare() has put them
@@ -338,6 +342,7 @@ private:
 
     static constexpr std::uint32_t kNoConstraint = UINT32_MAX; ///< a padding lane
     std::size_t m_batchMinConstraints = constants::kBatchMinConstraints;
+    std::vector<ImpactRecord>* m_impactLog = nullptr; ///< setImpactLog(); null: no records
     bool m_batched = false; ///< this step's velocity passes run in batches
     std::vector<ContactBatch> m_batches; ///< group 0's, then group 1's, then group 2's
     std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint
