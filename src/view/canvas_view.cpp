@@ -703,11 +703,14 @@ void CanvasView::updateBackgroundLayer(QPainter& viewportPainter)
             m_backgroundLayer = QImage(size, QImage::Format_ARGB32_Premultiplied);
             m_backgroundLayer.setDevicePixelRatio(ratio);
         }
+        // Paper under every pixel first: the scene rectangle of the viewport's pixel rectangle
+        // may stop short of its last row and column.
+        m_backgroundLayer.fill(m_look.background);
         QPainter layer(&m_backgroundLayer);
         layer.setRenderHints(viewportPainter.renderHints());
         layer.setFont(viewportPainter.font());
         layer.setWorldTransform(toPixels);
-        drawPaper(&layer, mapToScene(viewport()->rect()).boundingRect());
+        drawPaper(&layer, mapToScene(viewport()->rect().adjusted(-1, -1, 1, 1)).boundingRect());
         m_instruments->paintTrails(layer);
         m_layerTransform = toPixels;
         m_layerRevision = m_instruments->trailRevision();
