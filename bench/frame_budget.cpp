@@ -11,7 +11,7 @@
 // moved, trail points taken, arrows' forces) and one paint, each in wall time and the paint also
 // in the GUI thread's CPU time (which a shared machine inflates less), then the step's phases
 // (the engine's StepProfile) and what each instrument adds to a paint.
-// Run: build/release/bench/impetus-bench-frame-budget [--frames N] [--warm-up N] [--bodies N]
+// Run: build/bench/bench/impetus-bench-frame-budget [--frames N] [--warm-up N] [--bodies N]
 //      [--size WxH] [--seconds S] [--caches on|off|both]
 // Offscreen by default; under Xvfb, QT_QPA_PLATFORM=xcb paints through the X server instead.
 
