@@ -139,6 +139,12 @@ CanvasView::CanvasView(const SimulationRunner& runner, QWidget* parent)
     m_layerSettle.setSingleShot(true);
     m_layerSettle.setInterval(constants::kLayerSettleMs);
     connect(&m_layerSettle, &QTimer::timeout, this, [this] {
+        // A run slower than the settling time (a heavy scene, a busy machine) would otherwise
+        // paint the layer whole between every two states: wait for it to stop.
+        if (m_runner.isRunning()) {
+            m_layerSettle.start();
+            return;
+        }
         if (m_layerGrown) {
             m_layerDirty = true;
             viewport()->update();

@@ -81,9 +81,9 @@ inline constexpr double kMinimumGridSpacingPx = 28.0;
 
 /// Width of body outlines and springs, px (cosmetic: the same at every zoom).
 inline constexpr double kOutlineWidthPx = 1.5;
-/// The canvas's cached layer of paper, grid and trails (canvas_view.h) takes in a running trail's
-/// growth and is painted whole once no new state has come for this long, ms: at rest the canvas
-/// shows exactly what a whole paint shows, a few frames after the last step.
+/// The canvas's cached layer of paper, grid and trails (canvas_view.h) takes in the trails' growth
+/// and is painted whole once no new state has come for this long while not running, ms: at rest
+/// the canvas shows exactly what a whole paint shows, a few frames after the last step.
 inline constexpr int kLayerSettleMs = 100;
 /// A round body's stamped picture (body_stamps.h) puts its centre on a grid of this many steps
 /// per pixel: within 1/8 px of the true centre, which antialiasing cannot show, with 16 pictures
