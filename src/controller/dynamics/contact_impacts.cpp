@@ -149,6 +149,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
+    m_impactFrictionWork = 0;
+    m_impactNormalWork = 0;
     const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1] + m_preparedPoints[2];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
@@ -264,6 +266,13 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         const Eigen::Vector2d x = solveTwoPointLcp(k, count == 2 ? Eigen::Matrix2d(k.inverse()) : k, bias, count);
 
         const Vec2 t = tangentOf(c.normal);
+        // For the energy ledger: the relative normal velocities on the start-of-step velocities
+        // before the impulses (see the sum after them).
+        std::array<Scalar, 2> normalBefore{};
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            normalBefore[static_cast<std::size_t>(i)] = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal);
+        }
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             ContactConstraintPoint& p = c.points[ip.index];
@@ -278,6 +287,15 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                 m_records[best].touching = true;
         }
 
+        // The impulses x change the kinetic energy at the time of impact by Σ x·(u⁻ + u⁺)/2, with
+        // u⁻ the approach velocity then and u⁺ = u⁻ + the change the impulses made.
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const Scalar change = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) -
+                                  normalBefore[static_cast<std::size_t>(i)];
+            m_impactNormalWork += x(i) * (ip.velocity + 0.5 * change);
+        }
+
         // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
@@ -285,6 +303,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             const Scalar limit = c.friction * x(i);
             const Scalar jt = std::clamp(-vt * effectiveMass(a, b, ip.rA, ip.rB, t), -limit, limit);
             applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, jt * t, bodies);
+            // For the energy ledger: one impulse along t changes the kinetic energy by exactly
+            // jt·(vt before + vt after)/2.
+            if (m_measureImpactWork)
+                m_impactFrictionWork += 0.5 * jt * (vt + relativeVelocity(a, b, ip.rA, ip.rB).dot(t));
         }
         // Only a body that can move has been struck (a fixed body's contacts keep their status).
         for (SolverBody* body : {&a, &b}) {
