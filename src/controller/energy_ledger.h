@@ -49,10 +49,11 @@ struct EnergyLosses {
     }
 };
 
-/// One row of the ledger's history: the losses and the current energy at simulated time `time`.
+/// What a ledger holds at one moment, for a history of it (the app's ledger chart).
 struct LedgerSample {
-    Scalar time = 0; ///< s
-    Energy energy; ///< the world's energy then, J
+    Scalar startTime = 0; ///< simulated time at which the ledger started, s
+    Energy initial; ///< the world's energy then, J
+    Energy current; ///< the world's energy now, J
     EnergyLosses losses; ///< cumulative since the ledger started, J
 };
 
