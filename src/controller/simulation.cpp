@@ -1,6 +1,7 @@
 #include "controller/simulation.h"
 
 #include "controller/collision/narrow_phase.h"
+#include "controller/energy_ledger.h"
 #include "controller/soft/soft_body_builder.h"
 
 #include <algorithm>
@@ -55,6 +56,12 @@ Simulation::Simulation(SolverSettings settings)
 {
     m_contactSolver.useTasks(m_tasks.get());
     m_contactSolver.setBatchMinConstraints(settings.batchMinConstraints);
+}
+
+void Simulation::setLedger(EnergyLedger* ledger)
+{
+    m_ledger = ledger;
+    m_contactSolver.measureImpactWork(ledger != nullptr);
 }
 
 Integrator& Simulation::integratorFor(model::IntegratorKind kind)
@@ -441,6 +448,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
                          bool handOver)
 {
     const std::size_t total = stateCount(world);
+    if (m_ledger)
+        m_ledger->beginSubstep(world);
 
     // Phases 0 and 1: the start of the step and its collisions (startAndCollide). A later substep
     // of a step that found its contacts for the whole step only takes the start states afresh.
@@ -461,9 +470,13 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives, h);
     m_profile.prepareMs += millisecondsSince(solveStart);
     const Clock::time_point impactsStart = Clock::now();
+    if (m_ledger)
+        m_ledger->beforeImpacts(m_bodies);
     m_profile.impacts += m_contactSolver.solveImpacts(m_bodies, h);
     // After the impacts: a struck body's joint impulses act from where it is after its last one.
     m_jointSolver.prepare(world, m_bodies);
+    if (m_ledger)
+        m_ledger->afterImpacts(m_bodies, m_contactSolver.impactNormalWork(), m_contactSolver.impactFrictionWork());
     m_profile.contacts += static_cast<int>(m_contactSolver.constraints().size());
     m_profile.impactsMs += millisecondsSince(impactsStart);
     double solveMs = millisecondsSince(solveStart);
@@ -471,6 +484,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
     integratorFor(world.settings.integrator).step(world, m_startStates, m_startDerivatives, h, m_endStates);
+    if (m_ledger)
+        m_ledger->afterIntegration(world, m_startStates, m_endStates, h);
     m_profile.integrateMs += millisecondsSince(integrateStart);
 
     // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
@@ -497,6 +512,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         if (softJoints)
             shareJointMotion(world, false);
     };
+    if (m_ledger)
+        m_ledger->beforeVelocities(m_bodies, m_contactSolver.constraints());
     onSoftAggregates([&] { m_jointSolver.warmStart(m_bodies); });
     m_contactSolver.warmStart(m_bodies, h, !m_jointSolver.empty());
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
@@ -504,17 +521,25 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         m_contactSolver.solveVelocities(m_bodies);
     }
     m_contactSolver.finishVelocities(m_bodies);
+    if (m_ledger)
+        m_ledger->afterVelocities(m_bodies, m_contactSolver.constraints(), m_contactSolver.records());
     m_profile.velocityMs += millisecondsSince(velocityStart);
     const Clock::time_point positionStart = Clock::now();
 
     // Phase 5: positions, then position correction (moves bodies, never touches velocities).
     integratePositions(world, h);
+    if (m_ledger)
+        m_ledger->beforeCorrection(world, m_endStates);
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         syncSoftAggregates(world);
     m_contactSolver.beginPositions();
     m_jointSolver.beginPositions();
     for (int i = 0; i < m_settings.positionIterations; ++i) {
+        if (m_ledger)
+            m_ledger->beforeJointCorrection(world, m_bodies);
         const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
+        if (m_ledger)
+            m_ledger->afterJointCorrection(world, m_bodies);
         const bool contactsOk = m_contactSolver.solvePositions(m_bodies, i == 0 || !m_jointSolver.empty());
         if (jointsOk && contactsOk)
             break;
@@ -544,6 +569,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     m_profile.positionMs += millisecondsSince(positionStart);
     scatterStates(world, m_endStates, bodyTasks(world));
     updateSoftOwners(world);
+    if (m_ledger)
+        m_ledger->endSubstep(world);
     solveMs += millisecondsSince(velocityStart);
     m_profile.solveMs += solveMs;
 

@@ -18,6 +18,8 @@
 
 namespace impetus::controller {
 
+class EnergyLedger;
+
 /// Wall-clock time spent in each phase of the last step, ms. For benchmarks and profiling only;
 /// nothing physical depends on it.
 struct StepProfile {
@@ -94,6 +96,10 @@ public:
 
     /// The substeps of the last step and why (one, with no message, without soft bodies).
     const SoftStability& stability() const { return m_stability; }
+
+    /// Books every substep's energy by cause in `ledger` (energy_ledger.h), or stops booking for
+    /// nullptr (the default, which costs nothing). The caller keeps the ledger alive.
+    void setLedger(EnergyLedger* ledger);
 
 private:
     /// What an entry of the world's state list is, for the solvers.
@@ -173,6 +179,7 @@ private:
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;
     CollisionScratch m_collisionScratch;
+    EnergyLedger* m_ledger = nullptr; ///< see setLedger
 };
 
 } // namespace impetus::controller

@@ -292,6 +292,12 @@ inline constexpr std::size_t kMaxGraphSamples = 864000;
 /// of thousands of points slower than the physics adds them.
 inline constexpr int kGraphRefreshMs = 100;
 
+/// Energy ledger chart: the most points it keeps; beyond that every other one is dropped, so a
+/// long run stays readable and cheap to redraw (a stacked area redraws all its points).
+inline constexpr std::size_t kMaxLedgerPoints = 2000;
+/// Fill alpha of the ledger chart's bands: the band edges stay visible where bands cross zero.
+inline constexpr int kLedgerBandAlpha = 200;
+
 /// Ruler and protractor: how close to a body centre or vertex a click snaps to it, px.
 inline constexpr double kMeasureSnapPx = 10.0;
 inline const QColor kMeasureColor{0x0f, 0x17, 0x2a};

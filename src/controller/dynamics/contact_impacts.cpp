@@ -149,6 +149,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
+    m_impactFrictionWork = 0;
+    m_impactNormalWork = 0;
     const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1] + m_preparedPoints[2];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
@@ -296,6 +298,13 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                     record->k[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = k(i, j);
             }
         }
+        // For the energy ledger: the relative normal velocities on the start-of-step velocities
+        // before the impulses (see the sum after them).
+        std::array<Scalar, 2> normalBefore{};
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            normalBefore[static_cast<std::size_t>(i)] = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal);
+        }
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             ContactConstraintPoint& p = c.points[ip.index];
@@ -314,6 +323,14 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             record->afterNormalA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
             record->afterNormalB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
         }
+        // The impulses x change the kinetic energy at the time of impact by Σ x·(u⁻ + u⁺)/2, with
+        // u⁻ the approach velocity then and u⁺ = u⁻ + the change the impulses made.
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const Scalar change = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) -
+                                  normalBefore[static_cast<std::size_t>(i)];
+            m_impactNormalWork += x(i) * (ip.velocity + 0.5 * change);
+        }
 
         // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
         for (int i = 0; i < count; ++i) {
@@ -330,6 +347,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                 rp.frictionLimit = limit;
                 rp.frictionImpulse = jt;
             }
+            // For the energy ledger: one impulse along t changes the kinetic energy by exactly
+            // jt·(vt before + vt after)/2.
+            if (m_measureImpactWork)
+                m_impactFrictionWork += 0.5 * jt * (vt + relativeVelocity(a, b, ip.rA, ip.rB).dot(t));
         }
         if (record != nullptr) {
             record->afterA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};

@@ -197,6 +197,20 @@ public:
     /// are the warm start's: the passes' final ones are in the records (swapRecords).
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
 
+    /// This step's contact records so far (see swapRecords): after finishVelocities, the passes'
+    /// final impulses, one record per constraint in the same order.
+    const std::vector<model::ContactRecord>& records() const { return m_records; }
+
+    /// Whether solveImpacts sums the work of its impulses (for the energy ledger; off unless a
+    /// ledger is attached).
+    void measureImpactWork(bool on) { m_measureImpactWork = on; }
+    /// The work of the normal impulses of the last solveImpacts at their times of impact,
+    /// Σ j·(u⁻ + u⁺)/2 with u the relative normal velocity just before and after (≤ 0: e < 1
+    /// loses ½(1 − e²) of the approach energy), J; 0 when not measured.
+    Scalar impactNormalWork() const { return m_impactNormalWork; }
+    /// The work of friction during the last solveImpacts, Σ jₜ·(vₜ⁻ + vₜ⁺)/2 (≤ 0), J; 0 when not measured.
+    Scalar impactFrictionWork() const { return m_impactFrictionWork; }
+
 
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
@@ -309,6 +323,9 @@ private:
     std::vector<PushedPair> m_pushedPairs; ///< measurePushes's findings
 
     std::vector<ContactConstraint> m_constraints;
+    bool m_measureImpactWork = false; ///< see measureImpactWork
+    Scalar m_impactNormalWork = 0; ///< see impactNormalWork, J
+    Scalar m_impactFrictionWork = 0; ///< see impactFrictionWork, J
     /// This step's contact records (see swapRecords), begun while each constraint is built and
     /// finished from the batches, so the constraints need not be read again.
     std::vector<model::ContactRecord> m_records;
