@@ -474,7 +474,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         m_ledger->beforeImpacts(m_bodies);
     m_profile.impacts += m_contactSolver.solveImpacts(m_bodies, h);
     // After the impacts: a struck body's joint impulses act from where it is after its last one.
-    m_jointSolver.prepare(world, m_bodies);
+    m_jointSolver.prepare(world, m_bodies, h);
     if (m_ledger)
         m_ledger->afterImpacts(m_bodies, m_contactSolver.impactNormalWork(), m_contactSolver.impactFrictionWork());
     m_profile.contacts += static_cast<int>(m_contactSolver.constraints().size());

@@ -11,16 +11,34 @@ namespace impetus::controller {
 
 namespace {
 
-/// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix).
-Eigen::Matrix2d pointK(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+/// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix), each
+/// body's part weighted by how much of its velocity moves it (shareA, shareB; 1 for the position
+/// passes).
+Eigen::Matrix2d pointK(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB, Scalar shareA = 1,
+                       Scalar shareB = 1)
 {
-    const Scalar m = a.invMass + b.invMass;
-    Eigen::Matrix2d k;
-    k(0, 0) = m + a.invInertia * rA.y() * rA.y() + b.invInertia * rB.y() * rB.y();
-    k(0, 1) = -a.invInertia * rA.x() * rA.y() - b.invInertia * rB.x() * rB.y();
-    k(1, 0) = k(0, 1);
-    k(1, 1) = m + a.invInertia * rA.x() * rA.x() + b.invInertia * rB.x() * rB.x();
-    return k;
+    const auto part = [](const SolverBody& body, const Vec2& r, Scalar share) {
+        Eigen::Matrix2d k;
+        k(0, 0) = body.invMass + body.invInertia * r.y() * r.y();
+        k(0, 1) = -body.invInertia * r.x() * r.y();
+        k(1, 0) = k(0, 1);
+        k(1, 1) = body.invMass + body.invInertia * r.x() * r.x();
+        return Eigen::Matrix2d(share * k);
+    };
+    return part(a, rA, shareA) + part(b, rB, shareB);
+}
+
+/// How far a body's point at r moves this step apart from (1 − T)·h times its end velocity: a
+/// struck body moves h·(T·v − Σₖ τₖ·Δvₖ) more, with v its velocity after the impacts (v₀ + Σ Δvₖ),
+/// and turns likewise (Simulation::finishBodyPosition).
+Vec2 impactShift(const SolverBody& body, const Vec2& r, Scalar h)
+{
+    if (!body.hadImpact)
+        return Vec2::Zero();
+    const Scalar tau = body.lastImpactTau;
+    const Vec2 move = h * (tau * body.velocity - body.impactLateVelocity);
+    const Scalar turn = h * (tau * body.angularVelocity - body.impactLateAngularVelocity);
+    return move + cross(turn, r);
 }
 
 Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
@@ -44,7 +62,7 @@ SolverBody& JointSolver::bodyOf(std::span<SolverBody> bodies, std::uint32_t inde
     return index == kWorld ? m_world : bodies[index];
 }
 
-void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies)
+void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies, Scalar h)
 {
     m_joints.clear();
     m_world = SolverBody{};
@@ -66,13 +84,18 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         // body's last impact (SolverBody::impulseOrigin).
         const Vec2& originA = impulseOrigin(a);
         const Vec2& originB = impulseOrigin(b);
+        // A struck body's end velocity moves it only after its last impact, and its motion
+        // before counts apart (review point of issue 16: the target ignored it).
+        c.shareA = a.hadImpact ? 1 - a.lastImpactTau : 1;
+        c.shareB = b.hadImpact ? 1 - b.lastImpactTau : 1;
+        c.shift = impactShift(b, c.rB, h) - impactShift(a, c.rA, h);
         if (c.type == model::JointType::Pin) {
             if (c.bodyB != kWorld) {
                 const Vec2 common = 0.5 * (originA + c.rA + originB + c.rB);
                 c.rA = common - originA;
                 c.rB = common - originB;
             }
-            c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB));
+            c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB, c.shareA, c.shareB));
         } else {
             // Along the line between the anchors as the impulses see them, which keeps the
             // angular momentum exactly.
@@ -83,7 +106,8 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
             c.axis = distance > 0 ? Vec2(d / distance) : Vec2(1, 0);
             const Scalar rnA = cross(c.rA, c.axis);
             const Scalar rnB = cross(c.rB, c.axis);
-            const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+            const Scalar k = c.shareA * (a.invMass + a.invInertia * rnA * rnA) +
+                             c.shareB * (b.invMass + b.invInertia * rnB * rnB);
             c.rodMass = k > 0 ? 1 / k : 0;
         }
         m_joints.push_back(c);
@@ -111,8 +135,9 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
     for (Constraint& c : m_joints) {
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
-        const Vec2 dv = relativeVelocity(a, b, c.rA, c.rB);
-        const Vec2 predicted = c.offset + h * dv;
+        const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
+                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA));
+        const Vec2 predicted = c.offset + c.shift + h * dv;
         if (c.type == model::JointType::Pin) {
             const Vec2 impulse = -(c.pinMass * Vec2(predicted / h));
             c.impulse += impulse;

@@ -22,8 +22,10 @@ namespace impetus::controller {
 class JointSolver {
 public:
     /// Builds the constraints from the world's joints at the bodies' current poses, warm-starting
-    /// from each joint's stored impulse.
-    void prepare(const model::World& world, std::span<const SolverBody> bodies);
+    /// from each joint's stored impulse, for a step of h seconds. Called after the impacts: a
+    /// struck body's joints act from where it is after its last impact and aim at where the step
+    /// will really leave it.
+    void prepare(const model::World& world, std::span<const SolverBody> bodies, Scalar h);
 
     /// Applies the stored impulses.
     void warmStart(std::span<SolverBody> bodies);
@@ -61,6 +63,13 @@ private:
         Vec2 rA = Vec2::Zero();
         Vec2 rB = Vec2::Zero();
         Vec2 push = Vec2::Zero(); ///< linear position impulse of this substep's position passes, m·kg
+        /// How much of each body's end velocity moves it this step: 1 − T, with T·h its last
+        /// impact (Simulation::finishBodyPosition); 1 for a body without impacts.
+        Scalar shareA = 1;
+        Scalar shareB = 1;
+        /// Where the anchors' separation at the end of the step goes apart from what the end
+        /// velocities bring: the struck bodies' motion before and during their impacts, m.
+        Vec2 shift = Vec2::Zero();
         Vec2 offset = Vec2::Zero(); ///< p_B − p_A at the start of the step, m
         Scalar length = 0; ///< rod length, m
         Vec2 axis = Vec2::Zero(); ///< rod: unit vector from A's anchor to B's
