@@ -5,6 +5,7 @@
 #include "controller/collision/narrow_phase.h"
 #include "controller/collision/pair_trace.h"
 
+#include "support/polygon_shapes.h"
 #include "support/world_builders.h"
 
 #include <gtest/gtest.h>
@@ -21,25 +22,8 @@ namespace {
 
 constexpr Scalar kExact = 1e-12; ///< m: hand-worked results, up to rounding
 
-/// A convex polygon that owns its vertices and normals.
-struct Polygon {
-    std::vector<Vec2> vertices;
-    std::vector<Vec2> normals;
-    Vec2 centroid = Vec2::Zero();
-    PolygonShape shape() const { return PolygonShape{vertices, normals, centroid}; }
-};
-
-Polygon makePolygon(std::vector<Vec2> vertices)
-{
-    Polygon p;
-    p.vertices = std::move(vertices);
-    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-        const Vec2 e = p.vertices[(i + 1) % p.vertices.size()] - p.vertices[i];
-        p.normals.push_back(Vec2(e.y(), -e.x()).normalized());
-        p.centroid += p.vertices[i] / static_cast<Scalar>(p.vertices.size());
-    }
-    return p;
-}
+using testing::makePolygon;
+using testing::Polygon;
 
 /// [x0, x1]×[y0, y1], counter-clockwise from the lower left: faces bottom, right, top, left.
 Polygon makeBox(Scalar x0, Scalar y0, Scalar x1, Scalar y1)

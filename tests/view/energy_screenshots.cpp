@@ -2,6 +2,7 @@
 // with View › Energy Ledger open on the default example after a few seconds of running.
 // scripts/screenshots runs it under Xvfb. Usage: energy_screenshots OUTPUT_DIRECTORY
 
+#include "screenshot_files.h"
 #include "test_settings.h"
 #include "view/main_window.h"
 #include "view/simulation_runner.h"
@@ -38,9 +39,7 @@ int main(int argc, char** argv)
     MainWindow window;
     if (!window.openScene(QStringLiteral(":/examples/default.json")).isEmpty())
         return 1;
-    window.resize(kWidth, kHeight);
-    window.show();
-    if (!QTest::qWaitForWindowExposed(&window))
+    if (!impetus::view::test::showWindowAt(window, kWidth, kHeight))
         return 1;
     window.showEnergyLedger();
     auto* dock = window.findChild<QDockWidget*>(QStringLiteral("energyLedgerDock"));
@@ -50,11 +49,5 @@ int main(int argc, char** argv)
     for (int i = 0; i < kBatches; ++i)
         window.runner().stepBy(kStepsPerBatch);
     QTest::qWait(100);
-    const QString path = directory.filePath(QStringLiteral("energy-ledger.png"));
-    if (!window.grab().save(path)) {
-        std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
-        return 1;
-    }
-    std::printf("%s\n", qPrintable(path));
-    return 0;
+    return impetus::view::test::saveGrab(window, directory, QStringLiteral("energy-ledger.png")) ? 0 : 1;
 }

@@ -2,6 +2,7 @@
 // would (clicks, the Explain menu's actions, keys). scripts/screenshots-explainers runs it under
 // Xvfb. Usage: explainers_screenshots OUTPUT_DIRECTORY
 
+#include "screenshot_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/canvas_view.h"
@@ -31,25 +32,6 @@ constexpr int kHeight = 640;
 /// The collision inspector's width in its picture, px: wide enough for a line of the formula.
 constexpr int kInspectorWidth = 560;
 
-bool save(QWidget& widget, const QDir& directory, const QString& name)
-{
-    const QString path = directory.filePath(name);
-    if (!widget.grab().save(path)) {
-        std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
-        return false;
-    }
-    std::printf("%s\n", qPrintable(path));
-    return true;
-}
-
-bool showWindow(MainWindow& window)
-{
-    window.resize(kWidth, kHeight);
-    window.show();
-    window.activateWindow();
-    return QTest::qWaitForWindowExposed(&window);
-}
-
 void click(MainWindow& window, Vec2 at, Qt::KeyboardModifiers modifiers)
 {
     view::CanvasView& canvas = window.canvas();
@@ -71,7 +53,7 @@ bool separatingAxes(const QDir& directory)
     world.bodies.push_back(tipped);
     MainWindow window;
     window.setScene(world, QStringLiteral("Separating axes"));
-    if (!showWindow(window))
+    if (!view::test::showWindowAt(window, kWidth, kHeight))
         return false;
     click(window, Vec2(-0.5, 0.3), Qt::NoModifier);
     click(window, Vec2(0.7, 1.5), Qt::ShiftModifier);
@@ -85,12 +67,12 @@ bool separatingAxes(const QDir& directory)
     while (explainer->currentAxis() < least)
         QTest::keyClick(&window.canvas(), Qt::Key_N);
     QTest::qWait(50);
-    if (!save(window, directory, QStringLiteral("explain-sat-axis.png")))
+    if (!view::test::saveGrab(window, directory, QStringLiteral("explain-sat-axis.png")))
         return false;
     while (explainer->currentAxis() < pair->trace.axes.size())
         QTest::keyClick(&window.canvas(), Qt::Key_N);
     QTest::qWait(50);
-    return save(window, directory, QStringLiteral("explain-sat-summary.png"));
+    return view::test::saveGrab(window, directory, QStringLiteral("explain-sat-summary.png"));
 }
 
 /// The impact of tests/controller/impact_formula_test.cpp, inspected.
@@ -111,7 +93,7 @@ bool collisionInspector(const QDir& directory)
     world.bodies.push_back(box);
     MainWindow window;
     window.setScene(world, QStringLiteral("Collision inspector"));
-    if (!showWindow(window))
+    if (!view::test::showWindowAt(window, kWidth, kHeight))
         return false;
     window.findChild<QAction*>(QStringLiteral("collisionInspectorAction"))->trigger();
     // The attribute pane makes room for the formula.
@@ -126,7 +108,7 @@ bool collisionInspector(const QDir& directory)
     QListWidget* list = inspector->list();
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(list->item(0)).center());
     QTest::qWait(50);
-    return save(window, directory, QStringLiteral("explain-collision-inspector.png"));
+    return view::test::saveGrab(window, directory, QStringLiteral("explain-collision-inspector.png"));
 }
 
 } // namespace

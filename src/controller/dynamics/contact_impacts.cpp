@@ -148,6 +148,7 @@ std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<cons
 int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
+    m_struckBodies.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
     m_impactFrictionWork = 0;
     m_impactNormalWork = 0;
@@ -357,9 +358,12 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             record->afterB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
         }
         // Only a body that can move has been struck (a fixed body's contacts keep their status).
-        for (SolverBody* body : {&a, &b}) {
-            if (movable(*body))
-                body->hadImpact = true;
+        for (const std::uint32_t index : {c.bodyA, c.bodyB}) {
+            SolverBody& body = bodies[index];
+            if (movable(body) && !body.hadImpact) {
+                body.hadImpact = true;
+                m_struckBodies.push_back(index);
+            }
         }
 
         // Everything touching a body that just changed velocity may now approach (or stop).
@@ -386,30 +390,32 @@ void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h
     // one point in space, each at its own time, which keeps the angular momentum about any point
     // to rounding (docs/physics.md, "Conservation"). The arms move by how far the body travelled
     // before the impact, millimetres: the contact's geometry is otherwise the start's.
-    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-        SolverBody& body = bodies[i];
-        if (body.hadImpact)
-            body.impulseOrigin = positionAt(i, body, body.lastImpactTau, h);
-    }
-    for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
-        ContactConstraint& c = m_constraints[ci];
-        const SolverBody& a = bodies[c.bodyA];
-        const SolverBody& b = bodies[c.bodyB];
-        if (!a.hadImpact && !b.hadImpact)
-            continue;
-        const Vec2 t = tangentOf(c.normal);
-        const Vec2 originA = impulseOrigin(a);
-        const Vec2 originB = impulseOrigin(b);
-        for (std::size_t k = 0; k < static_cast<std::size_t>(c.pointCount); ++k) {
-            ContactConstraintPoint& p = c.points[k];
-            const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
-            p.rA = common - originA;
-            p.rB = common - originB;
-            p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
-            p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
+    // Only the struck bodies' contacts are visited (a pile with one impact has thousands of
+    // others); a contact between two struck bodies is done from its body A.
+    for (const std::uint32_t i : m_struckBodies)
+        bodies[i].impulseOrigin = positionAt(i, bodies[i], bodies[i].lastImpactTau, h);
+    for (const std::uint32_t struck : m_struckBodies) {
+        for (std::uint32_t at = m_bodyConstraintStart[struck]; at < m_bodyConstraintStart[struck + 1]; ++at) {
+            const std::uint32_t ci = m_bodyConstraints[at];
+            ContactConstraint& c = m_constraints[ci];
+            const SolverBody& a = bodies[c.bodyA];
+            const SolverBody& b = bodies[c.bodyB];
+            if (a.hadImpact && b.hadImpact && struck != c.bodyA)
+                continue;
+            const Vec2 t = tangentOf(c.normal);
+            const Vec2 originA = impulseOrigin(a);
+            const Vec2 originB = impulseOrigin(b);
+            for (std::size_t k = 0; k < static_cast<std::size_t>(c.pointCount); ++k) {
+                ContactConstraintPoint& p = c.points[k];
+                const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
+                p.rA = common - originA;
+                p.rB = common - originB;
+                p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
+                p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
+            }
+            if (m_batched)
+                packLane(bodies, h, groupOfLane(m_laneOf[ci]), m_laneOf[ci]);
         }
-        if (m_batched)
-            packLane(bodies, h, groupOfLane(m_laneOf[ci]), m_laneOf[ci]);
     }
 }
 

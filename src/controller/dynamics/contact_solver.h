@@ -322,6 +322,7 @@ private:
     std::vector<Vec2> m_pushes;
     std::vector<PushedPair> m_pushedPairs; ///< measurePushes's findings
 
+    std::vector<std::uint32_t> m_struckBodies; ///< the bodies this step's impacts struck, once each
     std::vector<ContactConstraint> m_constraints;
     bool m_measureImpactWork = false; ///< see measureImpactWork
     Scalar m_impactNormalWork = 0; ///< see impactNormalWork, J
