@@ -44,13 +44,13 @@ struct PairTotals {
 /// An impact's formula, evaluated.
 struct ImpactFormula {
     Scalar massA = 0; ///< kg; +∞ for a fixed body
-    Scalar massB = 0;
+    Scalar massB = 0; ///< kg; +∞ for a fixed body
     Scalar invInertiaA = 0; ///< 1/(kg·m²)
-    Scalar invInertiaB = 0;
+    Scalar invInertiaB = 0; ///< 1/(kg·m²)
     Scalar restitution = 0; ///< e
     Scalar friction = 0; ///< μ
     int count = 0; ///< points struck together
-    std::array<ImpactFormulaPoint, 2> points{};
+    std::array<ImpactFormulaPoint, 2> points{}; ///< the first `count` are the points struck
     PairTotals before; ///< just before the impact
     PairTotals after; ///< after its normal and friction impulses
 };

@@ -32,7 +32,7 @@ enum class AxisKind : std::uint8_t {
 
 /// One axis as the narrow phase tested it. Projections are dot products with `normal`, m.
 struct TracedAxis {
-    AxisKind kind = AxisKind::Face;
+    AxisKind kind = AxisKind::Face; ///< what the axis is: a face normal, or a closest-feature line
     int owner = 0; ///< 0: the axis belongs to piece A (a face of A), 1: to piece B
     std::size_t face = 0; ///< Face: the face's index on its owner; ClosestVertex: the vertex's index
     Vec2 normal = Vec2::Zero(); ///< unit; a face's outward normal, pointing away from its owner
@@ -43,14 +43,14 @@ struct TracedAxis {
     /// along this axis; positive: the axis separates them.
     Scalar separation = 0;
     Scalar ownerMin = 0; ///< the owner's projection interval [ownerMin, ownerMax], m
-    Scalar ownerMax = 0;
+    Scalar ownerMax = 0; ///< the upper end of the owner's interval, m
     Scalar otherMin = 0; ///< the other shape's projection interval, m
-    Scalar otherMax = 0;
+    Scalar otherMax = 0; ///< the upper end of the other shape's interval, m
 };
 
 /// The narrow phase's work on one pair of convex pieces A and B, as it did it.
 struct CollisionTrace {
-    TraceMethod method = TraceMethod::None;
+    TraceMethod method = TraceMethod::None; ///< which test the narrow phase ran on the pair
     /// The axes in the order tested. SAT tests A's faces, then B's, and stops at the first axis
     /// that separates the pieces by more than the speculative distance.
     std::vector<TracedAxis> axes;
@@ -60,7 +60,7 @@ struct CollisionTrace {
     std::optional<std::size_t> separatingAxis;
     /// SAT: the face of A with the largest separation, and the face of B (indices into `axes`).
     std::optional<std::size_t> bestAxisA;
-    std::optional<std::size_t> bestAxisB;
+    std::optional<std::size_t> bestAxisB; ///< SAT: B's face of largest separation
     /// The axis whose normal the contact takes: SAT's reference face (the axis of least overlap,
     /// kept on A unless B's is clearly better), or the closest feature's axis.
     std::optional<std::size_t> contactAxis;
@@ -68,8 +68,8 @@ struct CollisionTrace {
     bool flipped = false;
     /// SAT: the incident face (on the other piece than the reference face): its index and ends, m.
     std::size_t incidentFace = 0;
-    Vec2 incidentStart = Vec2::Zero();
-    Vec2 incidentEnd = Vec2::Zero();
+    Vec2 incidentStart = Vec2::Zero(); ///< the incident face's first vertex, m
+    Vec2 incidentEnd = Vec2::Zero(); ///< the incident face's second vertex, m
     /// SAT: the incident face's points that survived clipping to the reference face's side planes,
     /// before the points too far apart are dropped, m. Empty for a corner-to-corner pair.
     std::vector<Vec2> clipped;

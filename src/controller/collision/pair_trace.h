@@ -16,7 +16,7 @@ namespace impetus::controller {
 
 /// One convex piece of a body, placed in the world, as the narrow phase saw it.
 struct TracedPiece {
-    ColliderPiece::Kind kind = ColliderPiece::Kind::Polygon;
+    ColliderPiece::Kind kind = ColliderPiece::Kind::Polygon; ///< polygon, circle or ellipse
     std::uint32_t body = 0; ///< index into World::bodies
     std::uint32_t piece = 0; ///< the body's convex piece (ColliderPiece::piece)
     std::vector<Vec2> vertices; ///< polygon: counter-clockwise, world frame, m
@@ -30,9 +30,9 @@ struct TracedPiece {
 /// The narrow phase's trace of one pair of pieces: A belongs to the body of lower index, as in
 /// the step, so the normal points from it to the other.
 struct PiecePairTrace {
-    TracedPiece a;
-    TracedPiece b;
-    CollisionTrace trace;
+    TracedPiece a; ///< the piece of the body of lower index
+    TracedPiece b; ///< the other piece
+    CollisionTrace trace; ///< what the narrow phase did on the pair
 };
 
 /// Runs the real narrow phase (narrow_phase.h, with a trace) on every pair of convex pieces of the
