@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <variant>
 
 namespace impetus::controller {
 
@@ -102,6 +103,8 @@ void Simulation::setUpSolverBodies(const model::World& world)
             sb.angularVelocity = body.state.angularVelocity;
             sb.friction = body.material.friction;
             sb.restitution = body.material.restitution;
+            if (const auto* circle = std::get_if<model::Circle>(&body.shape))
+                sb.round = circle->radius;
         }
     });
     // A soft body's own solver body is its grid's aggregate: only joints act on it (contacts act

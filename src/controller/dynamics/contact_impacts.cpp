@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 namespace impetus::controller {
 
@@ -18,6 +19,10 @@ using detail::kMaxBlockConditionNumber;
 using detail::tangentOf;
 
 namespace {
+
+/// The least fraction of a step a struck body's speculative contacts count as left after its last
+/// impact: an impact at the very end of the step leaves its gap to the next step.
+constexpr Scalar kShortestRemainder = 1e-9;
 
 /// Time t in (0, h] at which a gap s closes under relative normal velocity vn and acceleration a:
 /// the smallest root of s + vn·t + ½a·t² = 0. Negative when the gap does not close within h.
@@ -88,8 +93,35 @@ struct Approach {
     Scalar velocity = 0;
 };
 
+/// Where the gap of point p stands at τ₀·h, the latest impact on either body so far this step:
+/// from then on both bodies keep the velocities they have now (until the next impact), so a gap
+/// that the impacts opened or closed is measured there, not at the step's start. The surface
+/// points move with their bodies, turning with them.
+struct GapAt {
+    Scalar gap = 0; ///< m
+    Scalar velocity = 0; ///< relative normal velocity then, without the smooth forces' share, m/s
+};
+
+GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
+                      Scalar tau0, Scalar h, const ContactSolver& impacts)
+{
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    const Vec2 surfaceA = p.rA - 0.5 * p.separation * c.normal;
+    const Vec2 surfaceB = p.rB + 0.5 * p.separation * c.normal;
+    const Scalar turnA = impacts.turnAt(c.bodyA, a, tau0, h);
+    const Scalar turnB = impacts.turnAt(c.bodyB, b, tau0, h);
+    const Vec2 nowA = impacts.positionAt(c.bodyA, a, tau0, h) + rotate(surfaceA, turnA);
+    const Vec2 nowB = impacts.positionAt(c.bodyB, b, tau0, h) + rotate(surfaceB, turnB);
+    const Scalar elapsed = tau0 * h;
+    GapAt result;
+    result.gap = (nowB - nowA).dot(c.normal) + 0.5 * p.normalAcceleration * elapsed * elapsed;
+    result.velocity = relativeVelocity(a, b, rotate(p.rA, turnA), rotate(p.rB, turnB)).dot(c.normal);
+    return result;
+}
+
 Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
-                    Scalar h)
+                    Scalar h, const ContactSolver* impacts)
 {
     Approach result;
     const SolverBody& a = bodies[c.bodyA];
@@ -109,6 +141,25 @@ Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p,
     if (c.restitution == 0 && p.separation <= constants::kTouchDistance)
         return result;
     const Scalar threshold = p.carriesLoad ? constants::kRestingImpactThreshold : constants::kRestitutionThreshold;
+    // A body already struck this step moved on from its start with other velocities: its gaps
+    // close from where they stood at its last impact (issue 16, review point 1).
+    const Scalar tau0 = impacts && (a.hadImpact || b.hadImpact) ? std::max(a.lastImpactTau, b.lastImpactTau) : 0;
+    if (tau0 > 0) {
+        const GapAt at = gapAtLastImpact(c, p, bodies, tau0, h, *impacts);
+        if (at.gap <= constants::kTouchDistance) {
+            result.tau = tau0;
+        } else {
+            const Scalar t = timeToClose(at.gap, at.velocity + p.normalAcceleration * tau0 * h, p.normalAcceleration,
+                                         (1 - tau0) * h);
+            if (t < 0)
+                return result;
+            result.tau = tau0 + t / h;
+        }
+        result.velocity = at.velocity + p.normalAcceleration * result.tau * h;
+        if (result.velocity >= -threshold)
+            result.tau = -1;
+        return result;
+    }
     const Scalar vn = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
     if (p.separation <= constants::kTouchDistance) {
         result.tau = 0;
@@ -129,12 +180,13 @@ Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p,
 namespace detail {
 
 /// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when none is.
-std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h)
+std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
+                                      const ContactSolver* impacts)
 {
     Scalar fastest = -constants::kRestitutionThreshold;
     bool approaching = false;
     for (int i = 0; i < c.pointCount; ++i) {
-        const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)], bodies, h);
+        const Approach ap = approachOf(c, c.points[static_cast<std::size_t>(i)], bodies, h, impacts);
         if (ap.tau >= 0 && ap.velocity < fastest) {
             fastest = ap.velocity;
             approaching = true;
@@ -166,7 +218,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     heap.clear();
     m_versions.assign(m_constraints.size(), 0);
     const auto consider = [&](std::uint32_t ci) {
-        if (const std::optional<Scalar> fastest = fastestApproach(m_constraints[ci], bodies, h)) {
+        if (const std::optional<Scalar> fastest = fastestApproach(m_constraints[ci], bodies, h, this)) {
             heap.push_back({*fastest, ci, m_versions[ci]});
             std::push_heap(heap.begin(), heap.end(), later);
         }
@@ -231,24 +283,33 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         Scalar tau = 1;
         for (int i = 0; i < c.pointCount; ++i) {
             const auto ui = static_cast<std::size_t>(i);
-            const Approach ap = approachOf(c, c.points[ui], bodies, h);
+            const Approach ap = approachOf(c, c.points[ui], bodies, h, this);
             if (ap.tau < 0)
                 continue;
             ImpactPoint& ip = points[static_cast<std::size_t>(count++)];
             ip.index = ui;
-            ip.velocity = ap.velocity;
             tau = std::min(tau, ap.tau);
         }
         tau = std::max({tau, a.lastImpactTau, b.lastImpactTau});
+        // Each body has moved and turned by then: its surface point turns with it (issue 16,
+        // review point 2). The impulse acts half-way between the two surface points, and the
+        // approach is measured at those arms, so that the impulse, its effective mass and the
+        // speed it answers all use one point.
         const Vec2 centreA = positionAt(c.bodyA, a, tau, h);
         const Vec2 centreB = positionAt(c.bodyB, b, tau, h);
+        const Scalar turnA = turnAt(c.bodyA, a, tau, h);
+        const Scalar turnB = turnAt(c.bodyB, b, tau, h);
         for (int i = 0; i < count; ++i) {
             ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const ContactConstraintPoint& p = c.points[ip.index];
-            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
+            // The two surface points, which meet at the time of impact, each where its body took it.
+            const Vec2 surfaceA = centreA + rotate(Vec2(p.rA - 0.5 * p.separation * c.normal), turnA);
+            const Vec2 surfaceB = centreB + rotate(Vec2(p.rB + 0.5 * p.separation * c.normal), turnB);
+            const Vec2 common = 0.5 * (surfaceA + surfaceB);
             ip.tau = tau;
             ip.rA = common - centreA;
             ip.rB = common - centreB;
+            ip.velocity = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) + p.normalAcceleration * tau * h;
         }
 
         // Effective-mass matrix at those arms, and each point's distance from its target: a point
@@ -405,8 +466,16 @@ void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h
             const Vec2 t = tangentOf(c.normal);
             const Vec2 originA = impulseOrigin(a);
             const Vec2 originB = impulseOrigin(b);
+            // The bodies end the step at their end velocities only from their last impact on: a
+            // speculative contact may close the gap left then over what remains of the step, not
+            // the start's gap over all of it (a ball struck late in the step does not reach the
+            // one a few centimetres ahead, and must not be held back from it).
+            const Scalar tau0 = std::max(a.hadImpact ? a.lastImpactTau : 0.0, b.hadImpact ? b.lastImpactTau : 0.0);
+            const Scalar remaining = std::max(1 - tau0, kShortestRemainder);
             for (std::size_t k = 0; k < static_cast<std::size_t>(c.pointCount); ++k) {
                 ContactConstraintPoint& p = c.points[k];
+                if (tau0 > 0)
+                    p.closingGap = gapAtLastImpact(c, p, bodies, tau0, h, *this).gap / remaining;
                 const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
                 p.rA = common - originA;
                 p.rB = common - originB;
@@ -417,6 +486,15 @@ void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h
                 packLane(bodies, h, groupOfLane(m_laneOf[ci]), m_laneOf[ci]);
         }
     }
+}
+
+Scalar ContactSolver::turnAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
+{
+    // As positionAt, for the angle: τh·ω − h·Σⱼ min(τ, τⱼ)·Δωⱼ from the step's start.
+    Scalar turn = (tau * h) * body.angularVelocity;
+    for (std::uint32_t k = m_lastTimedImpulse[index]; k != kNoImpulse; k = m_impulseTimeline[k].previous)
+        turn -= (h * std::min(tau, m_impulseTimeline[k].tau)) * m_impulseTimeline[k].angularVelocityChange;
+    return turn;
 }
 
 Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
@@ -450,10 +528,10 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     a.impactLateAngularVelocity += tau * dwA;
     b.impactLateVelocity += tau * dvB;
     b.impactLateAngularVelocity += tau * dwB;
-    for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
+    for (const auto& [body, dv, dw] : {std::tuple{c.bodyA, dvA, dwA}, std::tuple{c.bodyB, dvB, dwB}}) {
         if (!movable(bodies[body]))
             continue; // a fixed body's motion never changes: nothing to remember
-        m_impulseTimeline.push_back({m_lastTimedImpulse[body], tau, dv});
+        m_impulseTimeline.push_back({m_lastTimedImpulse[body], tau, dv, dw});
         m_lastTimedImpulse[body] = static_cast<std::uint32_t>(m_impulseTimeline.size() - 1);
     }
 }

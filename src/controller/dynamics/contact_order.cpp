@@ -283,7 +283,7 @@ void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t
         v.tangentMass[lane] = q.tangentMass;
         v.normalImpulse[lane] = q.normalImpulse;
         v.tangentImpulse[lane] = q.tangentImpulse;
-        v.gapSpeed[lane] = p ? std::max(q.separation, 0.0) / h : kUnreachableGapSpeed;
+        v.gapSpeed[lane] = p ? std::max(q.closingGap, 0.0) / h : kUnreachableGapSpeed;
         PositionBatch::Anchors& anchors = positions.anchors[i];
         anchors.ax[lane] = q.localAnchorA.x();
         anchors.ay[lane] = q.localAnchorA.y();

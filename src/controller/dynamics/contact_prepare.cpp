@@ -29,16 +29,6 @@ Vec2 intoFrame(const Vec2& v, const Vec2& rotation)
     return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
-/// The radius of a rigid circle body, or 0 for any other shape and for a soft body's ellipse
-/// (whose solver body is not its owner), m.
-Scalar circleRadius(const model::World& world, std::uint32_t solverBody, std::uint32_t owner)
-{
-    if (solverBody != owner)
-        return 0;
-    const model::Circle* circle = std::get_if<model::Circle>(&world.bodies[owner].shape);
-    return circle ? circle->radius : 0;
-}
-
 /// Identifies a pair of pieces; lexicographic order is the broad phase's pair order.
 using PairKey = std::array<std::uint32_t, 4>;
 
@@ -184,8 +174,8 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         c.friction = mixFriction(a.friction, b.friction);
         c.restitution = mixRestitution(a.restitution, b.restitution);
         c.localNormalA = intoFrame(c.normal, m_rotations[c.bodyA]);
-        c.roundA = circleRadius(world, c.bodyA, c.ownerA);
-        c.roundB = circleRadius(world, c.bodyB, c.ownerB);
+        c.roundA = a.round;
+        c.roundB = b.round;
 
         const model::ContactRecord* match = m_previousOf[index] == kNoRecord ? nullptr : &previous[m_previousOf[index]];
 
@@ -197,6 +187,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
             p.id = mp.id;
             p.separation = mp.separation;
+            p.closingGap = mp.separation;
             p.point = mp.point;
             p.rA = mp.point - a.position;
             p.rB = mp.point - b.position;

@@ -67,6 +67,7 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
         if (c.roundB > 0)
             p.localAnchorB = frameB.inverseRotate(Vec2(-c.roundB * n));
         p.separation = (frameB.apply(p.localAnchorB) - frameA.apply(p.localAnchorA)).dot(n);
+        p.closingGap = p.separation;
         const Vec2 accA = da.acceleration + cross(da.angularAcceleration, p.rA);
         const Vec2 accB = db.acceleration + cross(db.angularAcceleration, p.rB);
         p.normalAcceleration = (accB - accA).dot(c.normal);
@@ -98,7 +99,7 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
     PositionBatch& positions = m_positionBatches[bi];
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {
         const ContactConstraintPoint& p = c.points[i];
-        batch.points[i].gapSpeed[lane] = std::max(p.separation, 0.0) / h;
+        batch.points[i].gapSpeed[lane] = std::max(p.closingGap, 0.0) / h;
         if (!round)
             continue;
         PositionBatch::Anchors& anchors = positions.anchors[i];

@@ -39,7 +39,8 @@ Eigen::Matrix2d normalK(const ContactConstraint& c, const SolverBody& a, const S
 
 Scalar mixRestitution(Scalar a, Scalar b) { return std::max(a, b); }
 
-Scalar mixFriction(Scalar a, Scalar b) { return std::sqrt(a * b); }
+// Equal materials, the common case, skip the square root: √(μ·μ) rounds back to exactly μ anyway.
+Scalar mixFriction(Scalar a, Scalar b) { return a == b ? a : std::sqrt(a * b); }
 
 void ContactSolver::computeRotations(std::span<const SolverBody> bodies, bool split)
 {

@@ -42,6 +42,10 @@ struct ContactConstraintPoint {
     Vec2 localAnchorA = Vec2::Zero(); ///< A's surface point, A's frame, m (position correction)
     Vec2 localAnchorB = Vec2::Zero(); ///< B's surface point, B's frame, m
     Scalar separation = 0; ///< at the start of the step, m (negative: overlap)
+    /// The gap the velocity passes let close over the whole step at the end velocities, m: the
+    /// separation, or for a contact of a body struck this step the gap left at the impact spread
+    /// over the rest of the step (ContactSolver::moveArmsToImpactTimes).
+    Scalar closingGap = 0;
     Scalar normalMass = 0; ///< 1 / (effective mass along the normal), kg
     Scalar tangentMass = 0; ///< 1 / (effective mass along the tangent), kg
     Scalar normalImpulse = 0; ///< accumulated contact-force impulse, N·s (warm-started)
@@ -211,6 +215,12 @@ public:
     /// The work of friction during the last solveImpacts, Σ jₜ·(vₜ⁻ + vₜ⁺)/2 (≤ 0), J; 0 when not measured.
     Scalar impactFrictionWork() const { return m_impactFrictionWork; }
 
+    /// Where body `index` is at τ·h of the step being solved, moving straight with its velocity and
+    /// the impacts solveImpacts has given it so far, m.
+    Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
+    /// How far body `index` has turned by τ·h, with its angular velocity and the impacts so far, rad.
+    Scalar turnAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
+
 
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
@@ -279,6 +289,7 @@ private:
         std::uint32_t previous = kNoImpulse;
         Scalar tau = 0;
         Vec2 velocityChange = Vec2::Zero();
+        Scalar angularVelocityChange = 0;
     };
 
     /// An approaching constraint waiting in the impact heap.
@@ -287,9 +298,6 @@ private:
         std::uint32_t constraint;
         std::uint32_t version;
     };
-
-    /// Where body `index` is at τ·h, moving straight with its velocity and the impacts so far.
-    Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
 
     /// After the impacts: each struck body's impulse origin (its place at its last impact), and
     /// the lever arms of every contact of a struck body taken from there (repacked into its batch

@@ -21,8 +21,11 @@ inline constexpr Scalar kMaxBlockConditionNumber = 1000.0;
 inline Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
 
 /// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when
-/// none is (contact_impacts.cpp).
-std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h);
+/// none is (contact_impacts.cpp). Within the impact pass, `impacts` is the solver whose impacts
+/// have already struck some bodies: a struck body's contacts then close from the gap left at its
+/// last impact (nullptr before any impact: from the step's start).
+std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
+                                      const ContactSolver* impacts = nullptr);
 
 /// The effective-mass matrix K of a contact's normal impulses, 1/kg: for two points the 2×2 matrix
 /// of the block solve; for one, K₁₁ = 1/(its normal mass) and the rest 0.

@@ -152,7 +152,7 @@ void ContactSolver::warmStart(std::span<SolverBody> bodies, Scalar h, bool share
                 q.tangentMass = p.tangentMass;
                 q.normalImpulse = p.normalImpulse;
                 q.tangentImpulse = p.tangentImpulse;
-                q.gapSpeed = std::max(p.separation, 0.0) / h;
+                q.gapSpeed = std::max(p.closingGap, 0.0) / h;
             }
         }
     }

@@ -41,6 +41,10 @@ struct alignas(64) SolverBody {
     /// here because building a contact would otherwise fetch it from the large model::Body.
     Scalar friction = 0;
     Scalar restitution = 0;
+    /// A rigid circle's radius, m; 0 for every other shape and for a soft body's ellipse. A
+    /// circle's contact point facing the other piece does not turn with it (ContactSolver::refresh);
+    /// kept here for the same reason as the material.
+    Scalar round = 0;
 };
 
 /// The velocity of B's material point at rB relative to A's at rA, m/s.
