@@ -131,8 +131,17 @@ std::vector<StepError> errorAgainstStep(const model::World& start, const std::ve
         // shows in the position only as sin ωt, which may be near zero at the end.
         for (long k = 0; k < steps; ++k) {
             comparison.step();
-            for (std::size_t i = 0; i < e.positionError.size(); ++i)
-                e.positionError[i] = std::max(e.positionError[i], comparison.positionError(i).value_or(0));
+            bool compared = false;
+            for (std::size_t i = 0; i < e.positionError.size(); ++i) {
+                if (const std::optional<Scalar> error = comparison.positionError(i)) {
+                    e.positionError[i] = std::max(e.positionError[i], *error);
+                    compared = true;
+                }
+            }
+            // A projectile that touched something has left the textbook for good in every run:
+            // the rest of the run adds nothing (and a resting pile would cost the whole run).
+            if (!compared)
+                break;
         }
         out.push_back(e);
     }

@@ -77,8 +77,9 @@ struct StepError {
     std::array<Scalar, 3> positionError{}; ///< per kComparedIntegrators, m (0: no analytic solution)
 };
 
-/// The largest position error of each integrator over `duration` seconds (rounded to whole steps)
-/// for each of `timeSteps`, on a scene with an analytic solution (empty otherwise): the log-log plot
+/// The largest position error of each integrator over `duration` seconds (rounded to whole steps;
+/// a run ends early once none of the three has an analytic solution left, as a projectile after
+/// its first contact) for each of `timeSteps`, on a scene with an analytic solution (empty otherwise): the log-log plot
 /// of error against h whose slope is each method's order (1 for the Eulers, 4 for RK4).
 std::vector<StepError> errorAgainstStep(const model::World& start, const std::vector<Scalar>& timeSteps, Scalar duration);
 

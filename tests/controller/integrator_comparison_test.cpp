@@ -101,6 +101,7 @@ TEST(IntegratorComparison, RecognisesOnlyTheTextbookCases)
         return r.ok() ? controller::analyticKind(*r.world) : AnalyticKind::None;
     };
     EXPECT_EQ(example("projectile.json"), AnalyticKind::Projectile);
+    EXPECT_EQ(example("spring.json"), AnalyticKind::Spring);
     EXPECT_EQ(example("pendulum.json"), AnalyticKind::None);
     EXPECT_EQ(example("spring-chain.json"), AnalyticKind::None);
 }
