@@ -85,12 +85,19 @@ void IntegratorComparison::setTimeStep(Scalar h)
         m_worlds[i].settings.integrator = kComparedIntegrators[i];
         m_worlds[i].settings.timeStep = h;
     }
+    m_diverged = {};
 }
 
 void IntegratorComparison::step()
 {
-    for (model::World& world : m_worlds)
-        m_simulation.step(world);
+    for (std::size_t i = 0; i < m_worlds.size(); ++i) {
+        // Stepping infinities and NaNs again would only spread them (and a broad phase fed with
+        // them has nothing sensible to sort).
+        if (m_diverged[i])
+            continue;
+        m_simulation.step(m_worlds[i]);
+        m_diverged[i] = firstNonFiniteBody(m_worlds[i]).has_value();
+    }
 }
 
 Scalar IntegratorComparison::energyError(std::size_t i) const

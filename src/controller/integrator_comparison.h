@@ -46,8 +46,12 @@ public:
 
     /// Starts again from the start state with time step h (s, > 0).
     void setTimeStep(Scalar h);
-    /// Advances each run by one fixed step.
+    /// Advances each run by one fixed step; a run that has diverged is left as it is.
     void step();
+    /// Whether run i produced a state that is not a finite number (a step far too long for its
+    /// springs: explicit Euler at ω·h = 1 doubles a spring's energy every step). It is no longer
+    /// stepped, so that the other two go on.
+    bool diverged(std::size_t i) const { return m_diverged[i]; }
 
     /// The run of integrator i (an index into kComparedIntegrators).
     const model::World& world(std::size_t i) const { return m_worlds[i]; }
@@ -65,6 +69,7 @@ public:
 private:
     model::World m_start;
     std::array<model::World, 3> m_worlds;
+    std::array<bool, 3> m_diverged{};
     Simulation m_simulation;
     AnalyticKind m_analytic = AnalyticKind::None;
     Scalar m_startEnergy = 0;

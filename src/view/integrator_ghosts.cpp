@@ -50,6 +50,9 @@ public:
         m_bounds = QRectF();
         if (comparison) {
             for (std::size_t i = 0; i < controller::kComparedIntegrators.size(); ++i) {
+                // A run that diverged has no place to be drawn at: the readout says so instead.
+                if (comparison->diverged(i))
+                    continue;
                 const model::World& world = comparison->world(i);
                 for (const model::Body& body : world.bodies) {
                     if (body.fixed)
@@ -84,6 +87,8 @@ public:
         // RK4 first and explicit Euler last: the ghost nearest the real run lies underneath, the one
         // that strays most on top, where it is seen leaving the others.
         for (std::size_t k = controller::kComparedIntegrators.size(); k-- > 0;) {
+            if (comparison->diverged(k))
+                continue;
             const model::World& world = comparison->world(k);
             QColor line = ghostColor(k);
             line.setAlpha(constants::kGhostOutlineAlpha);

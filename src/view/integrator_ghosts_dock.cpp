@@ -261,7 +261,10 @@ void IntegratorGhostsPanel::updateReadout()
     for (std::size_t i = 0; i < kIntegratorCount; ++i) {
         QString energy;
         QString position;
-        if (comparison) {
+        if (comparison && comparison->diverged(i)) {
+            energy = tr("diverged at t = %1 s").arg(comparison->world(i).time - comparison->start().time, 0, 'f', 3);
+            position = tr("diverged");
+        } else if (comparison) {
             energy = tr("%1 %").arg(kPercent * comparison->energyError(i), 0, 'g', kReadoutDigits);
             if (comparison->energyError(i) > 0)
                 energy.prepend(QLatin1Char('+'));
@@ -276,7 +279,7 @@ void IntegratorGhostsPanel::updateReadout()
         m_table->item(static_cast<int>(i), kPositionColumn)->setText(position);
     }
     if (comparison) {
-        const double t = comparison->world(0).time - comparison->start().time;
+        const double t = static_cast<double>(m_ghosts.steps()) * m_ghosts.timeStep();
         m_clock->setText(tr("Ghosts at t = %1 s after their start: n = %2 steps of h = %3%4")
                              .arg(t, 0, 'f', 3)
                              .arg(m_ghosts.steps())

@@ -83,6 +83,29 @@ TEST(IntegratorComparison, ErrorFallsAsTheMethodsOrder)
     }
 }
 
+TEST(IntegratorComparison, ADivergedRunStopsAndTheOthersGoOn)
+{
+    // At ω·h = 1 explicit Euler doubles the energy every step, 1 + ω²h² = 2: past 2¹⁰²⁴ it is no
+    // longer a finite number. Semi-implicit Euler (stable for ω·h < 2) and RK4 (for ω·h < 2.8)
+    // stay bounded.
+    const Scalar h = 1 / std::sqrt(kStiffness / kMass);
+    IntegratorComparison comparison(oscillator(h));
+    constexpr int kSteps = 1200;
+    for (int n = 0; n < kSteps; ++n)
+        comparison.step();
+    EXPECT_TRUE(comparison.diverged(kEuler));
+    EXPECT_FALSE(comparison.diverged(kSemiImplicit));
+    EXPECT_FALSE(comparison.diverged(kRk4));
+    // The two that did not diverge kept time; the one that did stopped when it did.
+    EXPECT_NEAR(comparison.world(kRk4).time, kSteps * h, 1e-9);
+    EXPECT_NEAR(comparison.world(kSemiImplicit).time, kSteps * h, 1e-9);
+    EXPECT_LT(comparison.world(kEuler).time, kSteps * h);
+    EXPECT_LT(std::abs(comparison.energyError(kSemiImplicit)), 1.0);
+    // A new time step starts every run again, diverged or not.
+    comparison.setTimeStep(kStep);
+    EXPECT_FALSE(comparison.diverged(kEuler));
+}
+
 TEST(IntegratorComparison, RecognisesOnlyTheTextbookCases)
 {
     EXPECT_EQ(controller::analyticKind(oscillator()), AnalyticKind::Spring);

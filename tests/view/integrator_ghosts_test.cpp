@@ -6,6 +6,7 @@
 // the position errors fall as h¹ and h⁴.
 
 #include "test_settings.h"
+#include "test_worlds.h"
 #include "view/canvas_view.h"
 #include "view/ghost_constants.h"
 #include "view/integrator_ghosts.h"
@@ -82,6 +83,7 @@ private slots:
     void springReadoutShowsEulersEnergyGrowth();
     void sliderSetsTheStepAndThePlotShowsTheOrders();
     void sceneWithoutAnAnalyticSolutionSaysSo();
+    void aGhostThatDivergesIsSaidSoAndTheOthersGoOn();
 
 private:
     /// Opens the example `name`, shows the window and switches View › Compare Integrators on as the
@@ -329,6 +331,51 @@ void IntegratorGhostsTest::sceneWithoutAnAnalyticSolutionSaysSo()
         QVERIFY(panel->plotted(static_cast<std::size_t>(i)).empty());
     }
     QCOMPARE(slopeLabel->text(), IntegratorGhostsPanel::tr("No analytic solution for this scene: no error to plot."));
+}
+
+void IntegratorGhostsTest::aGhostThatDivergesIsSaidSoAndTheOthersGoOn()
+{
+    // A ball on a spring with ω = 100 rad/s, and the ghosts at h = 1/90 s: ω·h = 1.11, past what
+    // explicit Euler survives (its energy grows by 1 + ω²h² = 2.2 a step, and is not a finite number
+    // after some 900 steps) but within what semi-implicit Euler (ω·h < 2) and RK4 (< 2.8) do. The
+    // real run, RK4 at 1/240 s, is fine.
+    constexpr double kOmega = 100;
+    model::World world = test::explodingSpringWorld();
+    world.springs[0].stiffness = kOmega * kOmega * world.bodies[0].mass;
+    MainWindow window;
+    window.setScene(world, QStringLiteral("stiff spring"));
+    window.resize(1100, 750);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* action = window.findChild<QAction*>(QStringLiteral("compareIntegratorsAction"));
+    QVERIFY(action);
+    action->trigger();
+    auto* slider = window.findChild<QSlider*>(QStringLiteral("ghostTimeStepSlider"));
+    auto* ghosts = window.findChild<IntegratorGhosts*>(QStringLiteral("integratorGhosts"));
+    auto* table = window.findChild<QTableWidget*>(QStringLiteral("ghostReadout"));
+    QVERIFY(slider && ghosts && table);
+    slider->setFocus();
+    QTest::keyClick(slider, Qt::Key_End);
+    for (int i = 0; i < 3; ++i)
+        QTest::keyClick(slider, Qt::Key_Left);
+    QCOMPARE(ghosts->timeStep(), 1.0 / 90);
+
+    // Fifteen seconds, in batches as a run shows them.
+    for (int i = 0; i < 15; ++i)
+        window.runner().stepBy(240);
+    QVERIFY(ghosts->comparison()->diverged(kEuler));
+    QVERIFY2(table->item(static_cast<int>(kEuler), 0)->text().startsWith(IntegratorGhostsPanel::tr("diverged at t = %1 s").left(12)),
+             qPrintable(table->item(static_cast<int>(kEuler), 0)->text()));
+    QCOMPARE(table->item(static_cast<int>(kEuler), 1)->text(), IntegratorGhostsPanel::tr("diverged"));
+    for (const std::size_t i : {kSemiImplicit, kRk4}) {
+        QVERIFY(!ghosts->comparison()->diverged(i));
+        QVERIFY(std::isfinite(numberIn(table->item(static_cast<int>(i), 0)->text())));
+        QVERIFY(std::isfinite(numberIn(table->item(static_cast<int>(i), 1)->text())));
+    }
+    QCOMPARE(ghosts->steps(), std::int64_t{15 * 90});
+    // The canvas still draws (the diverged ghost is left out).
+    QApplication::processEvents();
+    QVERIFY(!window.canvas().viewport()->grab().isNull());
 }
 
 QTEST_MAIN(IntegratorGhostsTest)
