@@ -376,7 +376,17 @@ void addIntegratorGhosts(MainWindow& window)
         dock->setVisible(on);
     });
     new DockCloseWatcher(*dock, *action);
-    if (auto* viewMenu = window.findChild<QMenu*>(QStringLiteral("viewMenu")))
+    auto* viewMenu = window.findChild<QMenu*>(QStringLiteral("viewMenu"));
+    if (viewMenu == nullptr)
+        return;
+    // Beside the other energy view, the ledger, rather than after the language menu.
+    const QList<QAction*> entries = viewMenu->actions();
+    const auto ledger = std::find_if(entries.begin(), entries.end(), [](const QAction* entry) {
+        return entry->objectName() == QLatin1String("energyLedgerAction");
+    });
+    if (ledger != entries.end() && ledger + 1 != entries.end())
+        viewMenu->insertAction(*(ledger + 1), action);
+    else
         viewMenu->addAction(action);
 }
 
