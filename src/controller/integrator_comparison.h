@@ -24,6 +24,11 @@ enum class AnalyticKind {
     /// point, no drag or joints: x(t) = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m),
     /// x_eq = anchor + m·g/k.
     Spring,
+    /// One dynamic body hung by its centre of mass on one rod to a fixed world point, in gravity,
+    /// no springs or drag, swinging (not going over the top): the centre moves as a simple
+    /// pendulum of length L at any amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L),
+    /// k² = sin²(θ₀/2) + θ̇₀²/(4ω₀²), θ measured from straight down; until the first contact.
+    Pendulum,
 };
 
 /// Which analytic solution `world` (in its start state) has, by its bodies, springs and settings.
@@ -63,7 +68,7 @@ public:
     /// (E − E₀)/|E₀| of run i, dimensionless (E₀ the start's energy; 0 when E₀ = 0).
     Scalar energyError(std::size_t i) const;
     /// The largest distance of a dynamic body of run i from the analytic solution, m; none when
-    /// the scene has none, or (a projectile) once any body has touched another.
+    /// the scene has none, or (a projectile, a pendulum) once any body has touched another.
     std::optional<Scalar> positionError(std::size_t i) const;
 
 private:

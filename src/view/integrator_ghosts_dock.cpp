@@ -246,6 +246,10 @@ void IntegratorGhostsPanel::onRestarted()
             m_analytic->setText(tr("Analytic solution: a mass on a spring, x = x_eq + (x₀ − x_eq)·cos ωt + "
                                    "(v₀/ω)·sin ωt, ω = √(k/m)."));
             break;
+        case controller::AnalyticKind::Pendulum:
+            m_analytic->setText(tr("Analytic solution: a pendulum at any amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), "
+                                   "ω₀ = √(g/L), until the first contact."));
+            break;
         case controller::AnalyticKind::None:
             m_analytic->setText(tr("No analytic solution for this scene: only the energy errors can be compared."));
             break;
@@ -278,7 +282,7 @@ void IntegratorGhostsPanel::updateReadout()
                 energy.prepend(QLatin1Char('+'));
             if (const std::optional<Scalar> error = comparison->positionError(i))
                 position = tr("%1 mm").arg(kMillimetres * *error, 0, 'g', kReadoutDigits);
-            else if (comparison->analytic() == controller::AnalyticKind::Projectile)
+            else if (comparison->analytic() != controller::AnalyticKind::None)
                 position = tr("no analytic solution after a contact");
             else
                 position = tr("no analytic solution");
