@@ -242,6 +242,29 @@ def spring_chain():
     write("spring-chain.json", scene(world("rk4"), bodies, springs=springs))
 
 
+def spring():
+    """A puck on an air table seen from above (no gravity), tied to the table's centre (the origin)
+    by an undamped spring of zero rest length: k = 10 N/m, m = 1 kg, so ω = √(k/m) = 3.162 rad/s and
+    T = 2π/ω = 1.987 s. Released 1 m out with a push of 1.5 m/s sideways, it runs round an ellipse
+    of half-axes 1 m and v/ω = 0.474 m back to where it started, every period. The textbook case of
+    View › Compare Integrators: explicit Euler's energy grows by (1 + ω²h²) every step."""
+    k, m, r = 10.0, 1.0, 0.15
+    bodies = [
+        # The table's rim frames the orbit. It lies far enough out that no step, even explicit
+        # Euler's at 1/30 s for its first seconds, comes within the engine's contact margins (about
+        # three steps' travel): the puck then flies free, and every step is the integrator's own,
+        # unsplit (no post at the centre for the same reason).
+        fixed("rim bottom", box(5.4, 0.1), (0.0, -1.65), STRUCTURE_COLOR),
+        fixed("rim top", box(5.4, 0.1), (0.0, 1.65), STRUCTURE_COLOR),
+        fixed("rim left", box(0.1, 3.2), (-2.65, 0.0), STRUCTURE_COLOR),
+        fixed("rim right", box(0.1, 3.2), (2.65, 0.0), STRUCTURE_COLOR),
+        body("puck", circle(r), (1.0, 0.0), "#64748b", mass=m, velocity=vec(0, 1.5)),
+    ]
+    springs = [{"bodyA": "puck", "anchorA": vec(0, 0), "bodyB": None, "anchorB": vec(0, 0),
+                "stiffness": num(k), "damping": 0, "restLength": 0}]
+    write("spring.json", scene(world("rk4", gravity=(0, 0)), bodies, springs=springs))
+
+
 def box_stack():
     """Left: ten boxes in a column, slightly narrower towards the top. Right: the book-stacking
     problem, six blocks leaning out over the edge of a table; in the ideal stack block k (from the
@@ -394,6 +417,7 @@ if __name__ == "__main__":
     projectile()
     pendulum()
     spring_chain()
+    spring()
     box_stack()
     pyramid()
     billiards()

@@ -24,6 +24,11 @@ enum class AnalyticKind {
     /// point, no drag or joints: x(t) = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m),
     /// x_eq = anchor + m·g/k.
     Spring,
+    /// One dynamic body hung by its centre of mass on one rod to a fixed world point, in gravity,
+    /// no springs or drag, swinging (not going over the top): the centre moves as a simple
+    /// pendulum of length L at any amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L),
+    /// k² = sin²(θ₀/2) + θ̇₀²/(4ω₀²), θ measured from straight down; until the first contact.
+    Pendulum,
 };
 
 /// Which analytic solution `world` (in its start state) has, by its bodies, springs and settings.
@@ -46,8 +51,12 @@ public:
 
     /// Starts again from the start state with time step h (s, > 0).
     void setTimeStep(Scalar h);
-    /// Advances each run by one fixed step.
+    /// Advances each run by one fixed step; a run that has diverged is left as it is.
     void step();
+    /// Whether run i produced a state that is not a finite number (a step far too long for its
+    /// springs: explicit Euler at ω·h = 1 doubles a spring's energy every step). It is no longer
+    /// stepped, so that the other two go on.
+    bool diverged(std::size_t i) const { return m_diverged[i]; }
 
     /// The run of integrator i (an index into kComparedIntegrators).
     const model::World& world(std::size_t i) const { return m_worlds[i]; }
@@ -59,12 +68,13 @@ public:
     /// (E − E₀)/|E₀| of run i, dimensionless (E₀ the start's energy; 0 when E₀ = 0).
     Scalar energyError(std::size_t i) const;
     /// The largest distance of a dynamic body of run i from the analytic solution, m; none when
-    /// the scene has none, or (a projectile) once any body has touched another.
+    /// the scene has none, or (a projectile, a pendulum) once any body has touched another.
     std::optional<Scalar> positionError(std::size_t i) const;
 
 private:
     model::World m_start;
     std::array<model::World, 3> m_worlds;
+    std::array<bool, 3> m_diverged{};
     Simulation m_simulation;
     AnalyticKind m_analytic = AnalyticKind::None;
     Scalar m_startEnergy = 0;
@@ -77,8 +87,9 @@ struct StepError {
     std::array<Scalar, 3> positionError{}; ///< per kComparedIntegrators, m (0: no analytic solution)
 };
 
-/// The largest position error of each integrator over `duration` seconds (rounded to whole steps)
-/// for each of `timeSteps`, on a scene with an analytic solution (empty otherwise): the log-log plot
+/// The largest position error of each integrator over `duration` seconds (rounded to whole steps;
+/// a run ends early once none of the three has an analytic solution left, as a projectile after
+/// its first contact) for each of `timeSteps`, on a scene with an analytic solution (empty otherwise): the log-log plot
 /// of error against h whose slope is each method's order (1 for the Eulers, 4 for RK4).
 std::vector<StepError> errorAgainstStep(const model::World& start, const std::vector<Scalar>& timeSteps, Scalar duration);
 

@@ -17,7 +17,9 @@ namespace {
 
 QColor toQColor(const model::Color& color) { return QColor(color.r, color.g, color.b); }
 
-QPainterPath outlinePath(const model::Body& body)
+} // namespace
+
+QPainterPath bodyOutlinePath(const model::Body& body)
 {
     QPainterPath path;
     if (const auto* circle = std::get_if<model::Circle>(&body.shape)) {
@@ -37,12 +39,10 @@ QPainterPath outlinePath(const model::Body& body)
     return path;
 }
 
-} // namespace
-
 BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* parent)
     : QGraphicsItem(parent)
     , m_id(id)
-    , m_outline(outlinePath(body))
+    , m_outline(bodyOutlinePath(body))
     , m_rigidOutline(m_outline)
 {
     if (const auto* circle = std::get_if<model::Circle>(&body.shape)) {

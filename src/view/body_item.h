@@ -15,6 +15,10 @@
 
 namespace impetus::view {
 
+/// The outline of `body`'s rigid shape in its own frame (m, origin at the centre of mass): a circle
+/// or ellipse, or the true outline of a box or polygon (not its convex pieces).
+QPainterPath bodyOutlinePath(const model::Body& body);
+
 /// Draws one body in its own frame (metres, origin at the centre of mass, y up): a circle or an
 /// ellipse with a radius line that shows the rotation, or the outline of a box or polygon. A
 /// concave polygon is drawn as its outline, not as the convex pieces the engine splits it into.

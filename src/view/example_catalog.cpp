@@ -50,6 +50,7 @@ QString exampleTitle(const QString& baseName)
         {"pyramid", QT_TRANSLATE_NOOP("impetus::view::Examples", "Pyramid")},
         {"soft-bodies", QT_TRANSLATE_NOOP("impetus::view::Examples", "Soft bodies: rigid and soft side by side")},
         {"spaceship-asteroids", QT_TRANSLATE_NOOP("impetus::view::Examples", "Spaceship and asteroids")},
+        {"spring", QT_TRANSLATE_NOOP("impetus::view::Examples", "Mass on a spring")},
         {"spring-chain", QT_TRANSLATE_NOOP("impetus::view::Examples", "Chain of springs")},
     };
     for (const Known& known : kKnown) {

@@ -8,6 +8,7 @@
 #include "view/explain_menu.h"
 #include "view/energy_ledger_chart.h"
 #include "view/graph_panel.h"
+#include "view/integrator_ghosts_dock.h"
 #include "view/language.h"
 #include "view/lesson_dock.h"
 #include "view/lesson_session.h"
@@ -131,6 +132,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_lesson = addLessons(*this);
     // The Explain menu: Separating Axes and the Collision Inspector.
     addExplainers(*this);
+    // View › Compare Integrators: the integrator ghosts and their dock.
+    addIntegratorGhosts(*this);
 
     m_canvas->setFocus();
     updateTitle();

@@ -94,6 +94,14 @@ model::World Timeline::stateAt(std::int64_t step)
     return world;
 }
 
+const model::World& Timeline::runStart(std::int64_t step) const
+{
+    std::size_t k = keyframeBefore(step);
+    while (k > 0 && !m_keyframes[k].essential)
+        --k;
+    return m_keyframes[k].world;
+}
+
 void Timeline::seek(std::int64_t step)
 {
     model::World world = stateAt(step);

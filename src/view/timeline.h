@@ -65,6 +65,9 @@ public:
 
     /// The world at `step` (clamped to firstStep() … lastStep()): a keyframe, replayed forward.
     model::World stateAt(std::int64_t step);
+    /// The world the run through `step` started from: the scene's start or the last edit at or
+    /// before `step` (the integrator ghosts start there).
+    const model::World& runStart(std::int64_t step) const;
 
 public slots:
     /// Pauses and shows the state at `step` (clamped), without forgetting anything.
