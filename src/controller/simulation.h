@@ -120,6 +120,15 @@ private:
     /// Phases 0 and 1 of a step of h seconds: the start states, the solver bodies, the smooth
     /// forces' derivatives, and the contacts found with speculative margins for h.
     void startAndCollide(const model::World& world, Scalar h);
+    /// Keeps every solver body's velocity (for holdContactEnergy) and returns their kinetic
+    /// energy, J.
+    Scalar saveVelocities();
+    /// Σ ½m·v² + ½I·ω² over the solver bodies that can move, J.
+    Scalar kineticEnergyOfBodies() const;
+    /// After the contact velocity passes of a world without joints: when they left more kinetic
+    /// energy than `kineticBefore`, runs more passes, then (if that is not enough) starts them over
+    /// from the saved velocities with no impulse (constants::kMaxExtraVelocityRounds).
+    void holdContactEnergy(Scalar kineticBefore, Scalar h);
     /// The substeps this step of `world` takes (docs/physics.md, "Time step and substeps"): what
     /// its soft grids need, and for a step longer than the solver's longest, solverSubsteps
     /// when the step has contacts or joints to solve (or the last step ended with contacts). A world with neither runs its integrator
@@ -157,6 +166,12 @@ private:
     std::vector<BodyDerivative> m_startDerivatives;
     ForceScratch m_forceScratch; ///< computeDerivatives' working arrays
     std::vector<SolverBody> m_bodies; ///< one per state-list entry (bodies, then soft ellipses)
+    /// A solver body's velocity before the contact velocity passes (saveVelocities).
+    struct SavedVelocity {
+        Vec2 velocity = Vec2::Zero(); ///< m/s
+        Scalar angularVelocity = 0; ///< rad/s
+    };
+    std::vector<SavedVelocity> m_savedVelocities;
     std::vector<Entry> m_entries;
     /// Per soft grid: its aggregate pose and velocity as the joint solver was handed it.
     std::vector<SolverBody> m_softAggregates;

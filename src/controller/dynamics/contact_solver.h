@@ -178,6 +178,9 @@ public:
     /// next step warm-starts from; see swapRecords) and marks the bodies that a contact force
     /// acted on.
     void finishVelocities(std::span<SolverBody> bodies);
+    /// Drops every accumulated contact-force impulse (warm start and passes alike), so that
+    /// warmStart() then starts the passes cold. The bodies' velocities are the caller's to restore.
+    void forgetImpulses();
 
     /// Exchanges this step's contact records (begun by prepare(), with the impacts from
     /// solveImpacts() and the impulses from finishVelocities()), one per constraint in the same

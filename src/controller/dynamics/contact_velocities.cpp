@@ -189,6 +189,23 @@ void ContactSolver::solveVelocities(std::span<SolverBody> bodies)
     });
 }
 
+void ContactSolver::forgetImpulses()
+{
+    for (ContactConstraint& c : m_constraints) {
+        for (ContactConstraintPoint& p : c.points) {
+            p.normalImpulse = 0;
+            p.tangentImpulse = 0;
+        }
+    }
+    for (ContactBatch& batch : m_batches) {
+        for (BatchPoint& p : batch.points) {
+            p.normalImpulse = Lanes{};
+            p.tangentImpulse = Lanes{};
+        }
+        batch.acted = LaneMask{};
+    }
+}
+
 void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
 {
     // The impulses go to the records alone, which is what the next step warm-starts from: the

@@ -56,6 +56,17 @@ inline Vec2 relativeVelocity(const SolverBody& a, const SolverBody& b, const Vec
 /// A body that can move (a fixed body has zero inverse mass and inertia).
 inline bool movable(const SolverBody& body) { return body.invMass > 0 || body.invInertia > 0; }
 
+/// ½m·v² + ½I·ω² of a body, J; 0 for what cannot move (a fixed body's own surface velocity).
+inline Scalar kineticEnergyOf(const SolverBody& body)
+{
+    Scalar kinetic = 0;
+    if (body.invMass > 0)
+        kinetic += 0.5 * body.velocity.squaredNorm() / body.invMass;
+    if (body.invInertia > 0)
+        kinetic += 0.5 * body.angularVelocity * body.angularVelocity / body.invInertia;
+    return kinetic;
+}
+
 /// Where a body's contact and joint impulses take their lever arms from this step: its place at
 /// its last impact, or at the start of the step if it had none, m.
 inline const Vec2& impulseOrigin(const SolverBody& body) { return body.hadImpact ? body.impulseOrigin : body.position; }
