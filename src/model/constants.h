@@ -280,6 +280,13 @@ inline constexpr Scalar kExplicitEulerSoftSafety = 0.9;
 /// of the default 1/240 s step are 65 µs.
 inline constexpr int kMaxSoftSubsteps = 64;
 
+/// Default damping ratio ζ of a soft body's grid springs (SoftSettings::dampingRatio), dimensionless.
+/// Each spring gets c = 2ζ·√(k·m/2) for ellipses of mass m. Chosen so that the default soft box
+/// (1 m, 1 kg, 64 per m², 2000 N/m) dropped on plastic ground rebounds at well under 0.3 of its
+/// landing speed at 1/240 s and 1/60 s (tests/controller/soft_landing_test.cpp), while a crushed
+/// box still recovers its shape. Measured values are in docs/physics.md, "Soft landings".
+inline constexpr Scalar kDefaultSoftDampingRatio = 2.0;
+
 /// Rate of the soft grids' internal damping, 1/s: every ellipse feels F = −β·m·(v − v_rigid),
 /// where v_rigid is the velocity it would have if the grid moved rigidly (the aggregate's v + ω × r).
 /// It damps every deformation alike and leaves the body's translation and rotation alone (the

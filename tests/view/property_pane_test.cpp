@@ -562,17 +562,30 @@ void PropertyPaneTest::softModeToggleAndAuto()
     QCOMPARE(spy.count(), 2);
     typeAndEnter(density, "256");
     typeAndEnter(stiffness, "5000");
+    // The damping is a ratio ζ by default; typing the coefficient makes the body keep that.
+    auto* dampingRatio = pane.findChild<QLineEdit*>("softDampingRatio");
+    QCOMPARE(dampingRatio->text(), QString("1"));
     typeAndEnter(pane.findChild<QLineEdit*>("softDamping"), "2");
     QCOMPARE(spy.count(), 5);
-    const model::SoftSettings expected{false, 256, 5000, 2};
+    model::SoftSettings expected;
+    expected.ellipsesPerSquareMeter = 256;
+    expected.stiffness = 5000;
+    expected.dampingMode = model::SoftDampingMode::Coefficient;
+    expected.damping = 2;
     QVERIFY(spy.at(4).at(1).value<model::Body>().soft == expected);
+    typeAndEnter(dampingRatio, "0.5");
+    QCOMPARE(spy.count(), 6);
+    expected.dampingMode = model::SoftDampingMode::Ratio;
+    expected.dampingRatio = 0.5;
+    QVERIFY(spy.at(5).at(1).value<model::Body>().soft == expected);
+    QCOMPARE(spy.at(5).at(2).toString(), QString("Change soft damping ratio"));
     typeAndEnter(stiffness, "0");
     QCOMPARE(pane.message(), QString("Soft stiffness must be greater than 0 (got 0)."));
 
     QTest::keyClick(soft, Qt::Key_Space);
-    QCOMPARE(spy.count(), 6);
-    QVERIFY(!spy.at(5).at(1).value<model::Body>().soft.has_value());
-    QCOMPARE(spy.at(5).at(2).toString(), QString("Turn off soft mode"));
+    QCOMPARE(spy.count(), 7);
+    QVERIFY(!spy.at(6).at(1).value<model::Body>().soft.has_value());
+    QCOMPARE(spy.at(6).at(2).toString(), QString("Turn off soft mode"));
     QVERIFY(!density->isEnabled());
 }
 

@@ -103,7 +103,7 @@ void computeRates(model::SoftGrid& grid)
     // The internal damping adds its rate to every ellipse's, shape matching its damping c_s/m and
     // its stiffness k_s/m.
     grid.maxDampingRate += constants::kSoftInternalDampingRate +
-                           constants::kSoftShapeMatching * grid.settings.damping / massOf(grid);
+                           constants::kSoftShapeMatching * grid.springDamping / massOf(grid);
     grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
@@ -141,6 +141,20 @@ void buildSpringFields(model::SoftGrid& grid)
         field.begin = std::min(field.begin, field.end);
 }
 
+/// Puts a freshly built grid where `body`'s saved grid state (scene key `soft.state`) says, when
+/// there is one with an ellipse for every ellipse of the grid; the body's own state is then the
+/// aggregate the file was saved with. Otherwise the grid stays the rigid copy it was built as.
+void restoreSoftState(model::SoftGrid& grid, const model::Body& body)
+{
+    if (!body.softState || body.softState->positions.size() != grid.size() ||
+        body.softState->velocities.size() != grid.size())
+        return;
+    grid.positions = body.softState->positions;
+    grid.velocities = body.softState->velocities;
+    grid.ownerState = body.state;
+    grid.rigidCopy = false;
+}
+
 /// Whether `grid` still describes `body` (same shape, mass and soft settings).
 bool matches(const model::SoftGrid& grid, const model::Body& body)
 {
@@ -151,9 +165,18 @@ bool matches(const model::SoftGrid& grid, const model::Body& body)
 
 bool isSoftBody(const model::Body& body) { return body.soft.has_value() && !body.fixed; }
 
+Scalar softSpringDamping(const model::SoftSettings& settings, Scalar ellipseMass)
+{
+    if (settings.dampingMode == model::SoftDampingMode::Coefficient)
+        return settings.damping;
+    // Two ellipses of mass m joined by one spring vibrate as one mass m/2 on it.
+    const Scalar reducedMass = 0.5 * ellipseMass;
+    return 2 * settings.dampingRatio * std::sqrt(settings.stiffness * reducedMass);
+}
+
 Scalar softShapeMatchingDamping(const model::SoftGrid& grid, const model::Body& body)
 {
-    return constants::kSoftShapeMatching * grid.settings.damping * grid.ellipseMass * body.invMass;
+    return constants::kSoftShapeMatching * grid.springDamping * grid.ellipseMass * body.invMass;
 }
 
 Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body)
@@ -210,6 +233,7 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
     for (const Vec2& c : centres)
         grid.restPositions.push_back(c - grid.restCentre);
     grid.ellipseMass = body.mass / static_cast<Scalar>(centres.size());
+    grid.springDamping = softSpringDamping(*body.soft, grid.ellipseMass);
 
     // Right and up neighbours (structural), up-right and up-left (shear): every pair once.
     const model::SoftSettings& soft = *body.soft;
@@ -226,7 +250,7 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
             spring.b = static_cast<std::uint32_t>(j);
             spring.restLength = (centres[static_cast<std::size_t>(j)] - centres[i]).norm();
             spring.stiffness = soft.stiffness;
-            spring.damping = soft.damping;
+            spring.damping = grid.springDamping;
             spring.diagonal = dc != 0 && dr != 0;
             grid.springs.push_back(spring);
         }
@@ -250,6 +274,7 @@ void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state)
         grid.velocities[i] = state.velocity + cross(state.angularVelocity, arm);
     }
     grid.ownerState = state;
+    grid.rigidCopy = true;
 }
 
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
@@ -294,7 +319,7 @@ void prepareSoftBodies(model::World& world)
         const model::Body& body = world.bodies[i];
         if (!isSoftBody(body))
             continue;
-        current = g < world.softBodies.size() && world.softBodies[g].body.index == i &&
+        current = g < world.softBodies.size() && world.softBodies[g].body.index == i && !body.softState &&
                   matches(world.softBodies[g], body) && world.softBodies[g].ownerState == body.state;
         ++g;
     }
@@ -318,6 +343,10 @@ void prepareSoftBodies(model::World& world)
         autoChoice = chooseAutoDensity(world);
 
     std::vector<model::SoftGrid> previous = std::move(world.softBodies);
+    // A body read with a saved grid state gets a grid built afresh for it, whatever it had.
+    std::erase_if(previous, [&](const model::SoftGrid& grid) {
+        return grid.body.index < world.bodies.size() && world.bodies[grid.body.index].softState.has_value();
+    });
     world.softBodies.clear();
     for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
@@ -333,7 +362,11 @@ void prepareSoftBodies(model::World& world)
         }
         const Scalar density = body.soft->autoDensity ? *autoChoice : body.soft->ellipsesPerSquareMeter;
         world.softBodies.push_back(buildSoftGrid(body, model::BodyId{i}, density));
+        restoreSoftState(world.softBodies.back(), body);
     }
+    // A saved grid state applies once, to the grid first built for it.
+    for (model::Body& body : world.bodies)
+        body.softState.reset();
 }
 
 void updateSoftOwners(model::World& world)
@@ -346,6 +379,7 @@ void updateSoftOwners(model::World& world)
         body.state.velocity = a.velocity;
         body.state.angularVelocity = a.angularVelocity;
         grid.ownerState = body.state;
+        grid.rigidCopy = false;
     }
 }
 

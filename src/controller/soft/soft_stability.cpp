@@ -40,7 +40,7 @@ Scalar integratorStep(const model::SoftGrid& grid, model::IntegratorKind integra
         if (omegaSq == 0)
             return gamma > 0 ? constants::kExplicitEulerSoftSafety * 2 / gamma : unlimited;
         const Scalar stiffness = grid.settings.stiffness;
-        const Scalar damping = grid.settings.damping;
+        const Scalar damping = grid.springDamping;
         if (!(damping > 0))
             return 0;
         // Shape matching's pull (rate λ² = k_s/m) is damped only by the internal damping β:
@@ -121,7 +121,7 @@ SoftStability softStability(const model::World& world)
         text += "; each step is split into ";
         text += std::to_string(result.substeps);
         text += " substeps";
-    } else if (integrator == model::IntegratorKind::Euler && !(world.softGrid(result.body)->settings.damping > 0)) {
+    } else if (integrator == model::IntegratorKind::Euler && !(world.softGrid(result.body)->springDamping > 0)) {
         text += ": explicit Euler gains energy on undamped springs at any step. Give the body some damping, "
                 "or use semi-implicit-euler or rk4";
     } else {
