@@ -23,6 +23,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QUndoStack>
 
 #include <chrono>
 #include <memory>
@@ -145,7 +146,8 @@ void AutosaveTest::killedAppIsOfferedAndRestoredAndALiveOneIsLeftAlone()
     // sit in a modal question and never autosave).
     std::unique_ptr<QProcess> killed = startApp(home.path(), scenePath);
     QVERIFY(killed->waitForStarted());
-    const std::optional<model::World> lost = waitForRunAutosave(folder, killed->processId());
+    const qint64 killedPid = killed->processId(); // QProcess forgets it once the process is gone
+    const std::optional<model::World> lost = waitForRunAutosave(folder, killedPid);
     QVERIFY2(lost, qPrintable(QString::fromLocal8Bit(killed->readAllStandardError())));
     std::unique_ptr<QProcess> alive = startApp(home.path(), scenePath);
     QVERIFY(alive->waitForStarted());
@@ -157,7 +159,7 @@ void AutosaveTest::killedAppIsOfferedAndRestoredAndALiveOneIsLeftAlone()
     QVERIFY(killed->waitForFinished());
     QCOMPARE(killed->exitStatus(), QProcess::CrashExit);
     // The last autosave before the kill is what can be restored.
-    const std::optional<model::World> last = waitForRunAutosave(folder, killed->processId());
+    const std::optional<model::World> last = waitForRunAutosave(folder, killedPid);
     QVERIFY(last);
     QVERIFY(last->bodies[0].state.position.y() <= lost->bodies[0].state.position.y());
 
@@ -170,7 +172,7 @@ void AutosaveTest::killedAppIsOfferedAndRestoredAndALiveOneIsLeftAlone()
         // Only the dead one is an orphan: the live one's lock is held.
         const std::vector<OrphanedAutosave> orphans = autosave.findOrphans();
         QCOMPARE(orphans.size(), std::size_t{1});
-        QVERIFY(QFileInfo(orphans[0].scenePath).fileName().startsWith(QStringLiteral("autosave-%1-").arg(killed->processId())));
+        QVERIFY(QFileInfo(orphans[0].scenePath).fileName().startsWith(QStringLiteral("autosave-%1-").arg(killedPid)));
         QVERIFY(orphans[0].problems.isEmpty());
         QCOMPARE(orphans[0].originalFile, QFileInfo(scenePath).absoluteFilePath());
         savedAt = orphans[0].savedAt;
