@@ -4,6 +4,8 @@
 #include "test_worlds.h"
 #include "view/property_pane.h"
 
+#include "controller/soft/soft_body_builder.h"
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCheckBox>
@@ -24,6 +26,7 @@ using impetus::Vec2;
 using impetus::view::PropertyPane;
 using impetus::view::Selection;
 namespace model = impetus::model;
+namespace controller = impetus::controller;
 namespace test = impetus::view::test;
 
 namespace {
@@ -138,6 +141,7 @@ private slots:
     void pinHingeEditRecomputesBodyAnchors();
     void fixedAndColourAreEditable();
     void softModeToggleAndAuto();
+    void softDampingShowsTheRatioAndItsCoefficient();
     void refreshUpdatesLiveValuesButNotTheFocusedField();
     void refreshAfterTheBodyIsGoneShowsTheWorld();
     void multiSelectionShowsTheFirstBodyWithANote();
@@ -532,6 +536,34 @@ void PropertyPaneTest::fixedAndColourAreEditable()
     QCOMPARE(pane.findChild<QPushButton*>("color")->text(), QString("#123456"));
 }
 
+void PropertyPaneTest::softDampingShowsTheRatioAndItsCoefficient()
+{
+    // A 1 kg, 1 m soft box at the defaults: 64 ellipses of 1/64 kg, ζ = 2, so each grid spring has
+    // c = 2·2·√(2000·(1/64)/2) = 15.811 N·s/m. The pane shows ζ and, beside it, that coefficient.
+    model::World world;
+    model::Body box;
+    box.name = "jelly";
+    box.shape = model::Box{1, 1};
+    box.massSpec = {model::MassMode::Mass, 1};
+    box.soft = model::SoftSettings{};
+    box.updateDerived();
+    world.bodies.push_back(box);
+    controller::prepareSoftBodies(world);
+    PropertyPane pane;
+    QVERIFY(showActive(pane));
+    pane.showSelection(world, bodySelection(0));
+    QCOMPARE(pane.findChild<QLineEdit*>("softDampingRatio")->text(), QString("2"));
+    const double coefficient = pane.findChild<QLineEdit*>("softDamping")->text().toDouble();
+    QVERIFY2(std::abs(coefficient - 4 * std::sqrt(2000.0 / 128)) < 1e-3, qPrintable(QString::number(coefficient)));
+
+    // A body given the coefficient shows the ratio that coefficient amounts to on its grid.
+    world.bodies[0].soft->dampingMode = model::SoftDampingMode::Coefficient;
+    world.bodies[0].soft->damping = std::sqrt(2000.0 / 128); // ζ = 0.5
+    controller::prepareSoftBodies(world);
+    pane.showSelection(world, bodySelection(0));
+    QCOMPARE(pane.findChild<QLineEdit*>("softDampingRatio")->text(), QString("0.5"));
+}
+
 void PropertyPaneTest::softModeToggleAndAuto()
 {
     PropertyPane pane;
@@ -564,7 +596,7 @@ void PropertyPaneTest::softModeToggleAndAuto()
     typeAndEnter(stiffness, "5000");
     // The damping is a ratio ζ by default; typing the coefficient makes the body keep that.
     auto* dampingRatio = pane.findChild<QLineEdit*>("softDampingRatio");
-    QCOMPARE(dampingRatio->text(), QString("1"));
+    QCOMPARE(dampingRatio->text(), QString("2")); // constants::kDefaultSoftDampingRatio
     typeAndEnter(pane.findChild<QLineEdit*>("softDamping"), "2");
     QCOMPARE(spy.count(), 5);
     model::SoftSettings expected;
@@ -700,8 +732,8 @@ void PropertyPaneTest::tabReachesEveryField_data()
     QTest::addColumn<int>("fields");
     // Name, shape, vertex table and its two buttons, position ×2, angle, velocity ×2, angular
     // velocity, mass mode, density, mass, inertia, restitution, friction, fixed, colour, soft, the
-    // three soft fields, and the five "Show vectors" boxes.
-    QTest::newRow("soft polygon") << bodySelection(2) << 28;
+    // four soft fields (density, stiffness, damping ratio, damping), and the five "Show vectors" boxes.
+    QTest::newRow("soft polygon") << bodySelection(2) << 29;
     QTest::newRow("world") << Selection{} << 5;
     QTest::newRow("spring") << Selection{{}, {0}, {}} << 9;
     QTest::newRow("rod") << Selection{{}, {}, {0}} << 8;
