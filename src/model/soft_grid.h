@@ -38,7 +38,6 @@ struct SoftSpringField {
     std::int32_t begin = 0;
     std::int32_t end = 0; ///< see begin
     std::vector<Scalar> stiffness; ///< per cell (columns × rows, row-major): k, N/m
-    std::vector<Scalar> damping; ///< per cell: c, N·s/m
     std::vector<Scalar> restLength; ///< per cell: L₀, m
     bool operator==(const SoftSpringField&) const = default; ///< memberwise equality
 };
@@ -71,8 +70,6 @@ struct SoftGrid {
     Scalar springDamping = 0;
     /// Bound on ω² of the fastest grid vibration, 1/s²: max over ellipses of 2·λmax(Σ k·u·uᵀ)/m.
     Scalar maxSpringRate = 0;
-    /// The same bound for the spring damping, 1/s: max over ellipses of 2·λmax(Σ c·u·uᵀ)/m.
-    Scalar maxDampingRate = 0;
 
     std::vector<std::int32_t> cellEllipse; ///< columns × rows, row-major: ellipse index or −1
     std::vector<std::int32_t> ellipseCell; ///< per ellipse: its cell, row·columns + column

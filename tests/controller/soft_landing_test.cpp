@@ -4,7 +4,10 @@
 
 #include "controller/simulation.h"
 #include "controller/soft/soft_body_builder.h"
+#include "controller/diagnostics.h"
 #include "controller/soft/soft_body_shape.h"
+#include "controller/soft/soft_damping.h"
+#include "controller/soft/soft_stability.h"
 #include "controller/solver_under_test.h"
 #include "model/constants.h"
 #include "support/world_builders.h"
@@ -14,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 namespace impetus {
@@ -100,6 +104,102 @@ TEST(SoftLanding, DefaultBoxStillRecoversFromBeingCrushed)
     EXPECT_NEAR(controller::softLatticeArea(world.softBodies[0]) / restArea, 1.0, 0.01);
     EXPECT_EQ(inverted, 0);
     EXPECT_GT(smallest, 0.5);
+}
+
+/// A 1 m, 1 kg soft box of `density` ellipses per m² and `stiffness` N/m at the default damping
+/// ratio, with no gravity, stretched by 10% about its centre and released.
+model::World stretchedSoftBox(Scalar density, Scalar stiffness, Scalar h, model::IntegratorKind integrator)
+{
+    model::World world = makeEmptyWorld(integrator, h);
+    model::Body box = makeBox("jelly", 1, 1, 1, Vec2::Zero());
+    box.soft = model::SoftSettings{};
+    box.soft->ellipsesPerSquareMeter = density;
+    box.soft->stiffness = stiffness;
+    world.bodies.push_back(box);
+    controller::prepareSoftBodies(world);
+    for (Vec2& p : world.softBodies[0].positions)
+        p *= 1.1;
+    return world;
+}
+
+TEST(SoftDampingPass, TheDefaultBoxIsNotSplitForItsStiffnessAloneAndNotAsFinelyAsBefore)
+{
+    // Before the damping pass the default box (ζ = 2: c = 15.8 N·s/m, damping rate γ = 8c/m =
+    // 8,100/s) took 14 substeps at 1/240 s and 56 at 1/60 s under RK4, for stability. Now its
+    // stiffness needs 3 and 10 (ω·h ≤ 1.8 with ω = 1,022/s, as with the old 1 N·s/m), and the pass
+    // keeps 2c·h/m ≤ 0.75 for accuracy: 12 and 45.
+    const model::World world240 = defaultSoftBoxAbovePlasticGround(0.5, constants::kDefaultTimeStep);
+    const model::SoftGrid& grid = world240.softBodies.at(0);
+    const Scalar omega = std::sqrt(grid.maxSpringRate);
+    const Scalar pairRate = 2 * grid.springDamping / grid.ellipseMass;
+    EXPECT_NEAR(omega, 1021.8, 0.1);
+    EXPECT_NEAR(pairRate, 2024, 1);
+    for (const auto& [h, stiffnessSubsteps, substeps] : {std::tuple{constants::kDefaultTimeStep, 3, 12},
+                                                          std::tuple{1.0 / 60.0, 10, 45}}) {
+        EXPECT_EQ(static_cast<int>(std::ceil(omega * h / constants::kSoftContactStabilityLimit)), stiffnessSubsteps);
+        const controller::SoftStability s = controller::softStability(defaultSoftBoxAbovePlasticGround(0.5, h));
+        EXPECT_TRUE(s.stable);
+        EXPECT_EQ(s.substeps, substeps) << "at h = " << h;
+        EXPECT_LE(pairRate * h / s.substeps, constants::kSoftDampingPassLimit);
+        EXPECT_NE(s.message.find("damping"), std::string::npos) << s.message;
+    }
+}
+
+TEST(SoftDampingPass, AStiffFineGridThatHitTheCapRunsStableAndNeverGainsEnergy)
+{
+    // 20,000 N/m at 1024 per m² with ζ = 2: the damping rate 8c/m = 102,000/s used to need 180
+    // substeps of 1/240 s under RK4, past the cap of 64, and the run diverged. Its stiffness needs
+    // 30 (ω = 12,806/s); the pass is stable at any step, so at the cap it runs, and every step
+    // loses energy.
+    for (const model::IntegratorKind integrator :
+         {model::IntegratorKind::Rk4, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Euler}) {
+        model::World world = stretchedSoftBox(1024, 20000, constants::kDefaultTimeStep, integrator);
+        const controller::SoftStability s = controller::softStability(world);
+        EXPECT_TRUE(s.stable) << s.message;
+        EXPECT_EQ(s.substeps, constants::kMaxSoftSubsteps);
+        controller::Simulation simulation(controller::settingsUnderTest());
+        Scalar energy = controller::computeEnergy(world).total();
+        const Scalar start = energy;
+        for (int i = 0; i < 24; ++i) {
+            simulation.step(world);
+            const Scalar now = controller::computeEnergy(world).total();
+            ASSERT_TRUE(std::isfinite(now));
+            // Never more than rounding above the step before (it settles to 1e-26 J).
+            EXPECT_LE(now, energy + 1e-15 * start) << model::integratorName(integrator) << " step " << i;
+            energy = now;
+        }
+        EXPECT_LT(energy, 1e-3 * start) << model::integratorName(integrator); // and it settles in 0.1 s
+    }
+}
+
+TEST(SoftDampingPass, KeepsMomentumAngularMomentumAndTakesOutWhatItReports)
+{
+    // A spinning, stretched, drifting box: one pass with a strong damping (2c·h/m = 50).
+    model::World world = stretchedSoftBox(64, 2000, constants::kDefaultTimeStep, model::IntegratorKind::Rk4);
+    model::SoftGrid& grid = world.softBodies.at(0);
+    for (std::size_t i = 0; i < grid.size(); ++i)
+        grid.velocities[i] = Vec2(1, -2) + cross(3.0, grid.positions[i]) + 0.2 * grid.positions[i];
+    const Vec2 momentum = controller::linearMomentum(world);
+    const Scalar angular = controller::angularMomentum(world);
+    const Scalar kinetic = controller::computeEnergy(world).kinetic;
+    // The kinetic energy of the deformation, the motion left over from the rigid one (the box is
+    // centred on the origin, and the stretching carries no angular momentum).
+    const auto deformation = [&] {
+        Scalar sum = 0;
+        for (std::size_t i = 0; i < grid.size(); ++i)
+            sum += 0.5 * grid.ellipseMass * (grid.velocities[i] - Vec2(1, -2) - cross(3.0, grid.positions[i])).squaredNorm();
+        return sum;
+    };
+    const Scalar deformed = deformation();
+    controller::SoftDampingScratch scratch;
+    const Scalar taken = controller::dampSoftGrids(world, 50 * grid.ellipseMass / (2 * grid.springDamping), scratch);
+    EXPECT_NEAR((controller::linearMomentum(world) - momentum).norm(), 0, 1e-12);
+    EXPECT_NEAR(controller::angularMomentum(world), angular, 1e-12 * std::abs(angular));
+    EXPECT_GT(taken, 0);
+    EXPECT_NEAR(controller::computeEnergy(world).kinetic, kinetic - taken, 1e-12 * kinetic);
+    // What it took out is the deformation's, nearly all of it; the rigid motion stays.
+    EXPECT_NEAR(taken, deformed - deformation(), 1e-9 * kinetic);
+    EXPECT_LT(deformation(), 0.05 * deformed);
 }
 
 /// Two balls of mass m joined by one spring of stiffness k, damped with the coefficient a soft

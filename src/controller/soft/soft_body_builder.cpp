@@ -70,7 +70,7 @@ Scalar largestEigenvalue(Scalar xx, Scalar xy, Scalar yy)
 /// The body's mass, from its grid.
 Scalar massOf(const model::SoftGrid& grid) { return grid.ellipseMass * static_cast<Scalar>(grid.size()); }
 
-/// Fills grid.maxSpringRate and maxDampingRate. The stiffness matrix K of the grid is made of 2×2
+/// Fills grid.maxSpringRate. The stiffness matrix K of the grid is made of 2×2
 /// blocks k·u·uᵀ; by Gershgorin's theorem on blocks, λmax(M⁻¹K) ≤ max over ellipses of
 /// 2·λmax(Σ k·u·uᵀ)/m, which is exact for the fastest mode of a uniform square lattice (8k/m).
 void computeRates(model::SoftGrid& grid)
@@ -79,7 +79,6 @@ void computeRates(model::SoftGrid& grid)
         Scalar xx = 0, xy = 0, yy = 0;
     };
     std::vector<Block> stiffness(grid.size());
-    std::vector<Block> damping(grid.size());
     for (const model::SoftSpring& s : grid.springs) {
         const Vec2 d = grid.restPositions[s.b] - grid.restPositions[s.a];
         const Vec2 u = d / d.norm();
@@ -87,23 +86,15 @@ void computeRates(model::SoftGrid& grid)
             stiffness[end].xx += s.stiffness * u.x() * u.x();
             stiffness[end].xy += s.stiffness * u.x() * u.y();
             stiffness[end].yy += s.stiffness * u.y() * u.y();
-            damping[end].xx += s.damping * u.x() * u.x();
-            damping[end].xy += s.damping * u.x() * u.y();
-            damping[end].yy += s.damping * u.y() * u.y();
         }
     }
     grid.maxSpringRate = 0;
-    grid.maxDampingRate = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         grid.maxSpringRate = std::max(grid.maxSpringRate, 2 * largestEigenvalue(stiffness[i].xx, stiffness[i].xy,
                                                                                  stiffness[i].yy) / grid.ellipseMass);
-        grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
-                                                                                   damping[i].yy) / grid.ellipseMass);
     }
-    // The internal damping adds its rate to every ellipse's, shape matching its damping c_s/m and
-    // its stiffness k_s/m.
-    grid.maxDampingRate += constants::kSoftInternalDampingRate +
-                           constants::kSoftShapeMatching * grid.springDamping / massOf(grid);
+    // Shape matching adds its stiffness k_s/m. (The damping does not count: it is a pass of its
+    // own, stable at any step, soft_damping.h.)
     grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
@@ -118,7 +109,6 @@ void buildSpringFields(model::SoftGrid& grid)
         model::SoftSpringField& field = grid.springFields[f];
         field.step = kSpringDirections[f][0] + kSpringDirections[f][1] * grid.columns;
         field.stiffness.assign(cells, 0);
-        field.damping.assign(cells, 0);
         field.restLength.assign(cells, 0);
         field.begin = static_cast<std::int32_t>(cells);
         field.end = 0;
@@ -132,7 +122,6 @@ void buildSpringFields(model::SoftGrid& grid)
         model::SoftSpringField& field = grid.springFields[f];
         const auto cell = static_cast<std::size_t>(a);
         field.stiffness[cell] = s.stiffness;
-        field.damping[cell] = s.damping;
         field.restLength[cell] = s.restLength;
         field.begin = std::min(field.begin, a);
         field.end = std::max(field.end, a + 1);
