@@ -121,11 +121,11 @@ SoftStability softStability(const model::World& world)
     const model::SoftGrid& grid = *world.softGrid(result.body);
     if (result.stable && dampingSubsteps(grid, h) == result.substeps) {
         // The damping, not the stiffness, sets the count.
-        text += "': its springs' damping would stop their relative motion e-fold ";
+        text += "': its springs' damping, 2c·h/m = ";
         text += formatted(2 * grid.springDamping / grid.ellipseMass * h);
-        text += " times within h = ";
+        text += " at h = ";
         text += formatted(h * 1000);
-        text += " ms; each step is split into ";
+        text += " ms, is too strong for one damping pass; each step is split into ";
         text += std::to_string(result.substeps);
         text += " substeps to keep the damping accurate";
         result.message = text;
