@@ -209,12 +209,55 @@
         <source>--run-for and --size need --screenshot</source>
         <translation>--run-for und --size brauchen --screenshot</translation>
     </message>
+    <message>
+        <source>Start the simulation as soon as the window opens.</source>
+        <translation>Die Simulation starten, sobald das Fenster offen ist.</translation>
+    </message>
+    <message>
+        <source>--run opens a window, --screenshot does not: give one of them</source>
+        <translation>--run öffnet ein Fenster, --screenshot nicht: geben Sie nur eine der beiden an</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view</name>
     <message>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::Autosave</name>
+    <message>
+        <source>cannot write the autosave &apos;%1&apos;: %2</source>
+        <translation>die automatische Sicherung „%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: not a description of an autosave: %2</source>
+        <translation>%1: keine Beschreibung einer automatischen Sicherung: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot read it: %2</source>
+        <translation>%1: nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <source>Restore Unsaved Work</source>
+        <translation>Ungesicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <source>An autosave from %1 cannot be read and was not restored. It was kept in “%2”.</source>
+        <translation>Eine automatische Sicherung vom %1 ist nicht lesbar und wurde nicht wiederhergestellt. Sie liegt in „%2“.</translation>
+    </message>
+    <message>
+        <source>Impetus was not closed properly. Your work on “%1” was saved automatically at %2.</source>
+        <translation>Impetus wurde nicht ordnungsgemäß beendet. Ihre Arbeit an „%1“ wurde am %2 automatisch gesichert.</translation>
+    </message>
+    <message>
+        <source>Restore it? Discarding deletes the autosave.</source>
+        <translation>Wiederherstellen? Verwerfen löscht die automatische Sicherung.</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Wiederherstellen</translation>
     </message>
 </context>
 <context>
@@ -2102,6 +2145,14 @@
     <message>
         <source>Lock note</source>
         <translation>Sperrhinweis</translation>
+    </message>
+    <message>
+        <source>Soft damping ratio ζ</source>
+        <translation>Dämpfungsgrad ζ (weich)</translation>
+    </message>
+    <message>
+        <source>Change soft damping ratio</source>
+        <translation>Dämpfungsgrad des weichen Körpers ändern</translation>
     </message>
     <message>
         <source>Warnings</source>

@@ -209,12 +209,55 @@
         <source>--run-for and --size need --screenshot</source>
         <translation>--run-for y --size necesitan --screenshot</translation>
     </message>
+    <message>
+        <source>Start the simulation as soon as the window opens.</source>
+        <translation>Iniciar la simulación en cuanto se abra la ventana.</translation>
+    </message>
+    <message>
+        <source>--run opens a window, --screenshot does not: give one of them</source>
+        <translation>--run abre una ventana y --screenshot no: indique solo una de las dos</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view</name>
     <message>
         <source>cannot read %1: %2</source>
         <translation>no se puede leer %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::Autosave</name>
+    <message>
+        <source>cannot write the autosave &apos;%1&apos;: %2</source>
+        <translation>no se puede escribir la copia automática «%1»: %2</translation>
+    </message>
+    <message>
+        <source>%1: not a description of an autosave: %2</source>
+        <translation>%1: no es la descripción de una copia automática: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot read it: %2</source>
+        <translation>%1: no se puede leer: %2</translation>
+    </message>
+    <message>
+        <source>Restore Unsaved Work</source>
+        <translation>Recuperar el trabajo sin guardar</translation>
+    </message>
+    <message>
+        <source>An autosave from %1 cannot be read and was not restored. It was kept in “%2”.</source>
+        <translation>Una copia automática del %1 no se puede leer y no se ha recuperado. Se ha guardado en «%2».</translation>
+    </message>
+    <message>
+        <source>Impetus was not closed properly. Your work on “%1” was saved automatically at %2.</source>
+        <translation>Impetus no se cerró correctamente. Su trabajo en «%1» se guardó automáticamente el %2.</translation>
+    </message>
+    <message>
+        <source>Restore it? Discarding deletes the autosave.</source>
+        <translation>¿Recuperarlo? Descartar borra la copia automática.</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Recuperar</translation>
     </message>
 </context>
 <context>
@@ -2102,6 +2145,14 @@
     <message>
         <source>Lock note</source>
         <translation>Nota de bloqueo</translation>
+    </message>
+    <message>
+        <source>Soft damping ratio ζ</source>
+        <translation>Razón de amortiguación ζ (blando)</translation>
+    </message>
+    <message>
+        <source>Change soft damping ratio</source>
+        <translation>Cambiar la razón de amortiguación del cuerpo blando</translation>
     </message>
     <message>
         <source>Warnings</source>

@@ -3,6 +3,8 @@
 ///
 ///   impetus                      opens the default example scene, paused, ready to press Play
 ///   impetus SCENE.json           opens that scene
+///   impetus --run [SCENE.json]   opens the scene and starts it running at once (a demonstration
+///                                on a projector; tests use it to have a run to autosave)
 ///   impetus --screenshot OUT.png [--run-for SECONDS] [--size WxH] [SCENE.json]
 ///                                loads the scene (the default scene when none is given), takes
 ///                                round(SECONDS / dt) fixed steps headless, renders the canvas
@@ -19,9 +21,13 @@
 /// name), the window opens on the default scene and lists every problem in the dialog File > Open
 /// uses; the problems also go to stderr for a terminal user.
 ///
+/// The window autosaves the open scene (view/autosave.h) and, at start, offers to restore the
+/// work of an Impetus that did not quit cleanly.
+///
 /// The window, the help text and the messages are in the system's language when Impetus has it
 /// (German, Spanish; English otherwise), or in the one chosen in View › Language (view/language.h).
 
+#include "view/autosave.h"
 #include "view/canvas_view.h"
 #include "view/language.h"
 #include "view/main_window.h"
@@ -29,6 +35,7 @@
 #include "view/screenshot.h"
 #include "view/simulation_runner.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -211,7 +218,10 @@ int main(int argc, char* argv[])
     const QCommandLineOption sizeOption(
         QStringLiteral("size"), App::tr("With --screenshot: the image size in pixels (default 1280x720)."),
         App::tr("WxH"), QStringLiteral("%1x%2").arg(kDefaultScreenshotWidth).arg(kDefaultScreenshotHeight));
+    const QCommandLineOption runOption(QStringLiteral("run"),
+                                       App::tr("Start the simulation as soon as the window opens."));
     parser.addOption(screenshotOption);
+    parser.addOption(runOption);
     parser.addOption(runForOption);
     parser.addOption(sizeOption);
     parser.addPositionalArgument(QStringLiteral("scene"),
@@ -234,6 +244,10 @@ int main(int argc, char* argv[])
     }
     const QString scenePath = positional.value(0);
 
+    if (parser.isSet(screenshotOption) && parser.isSet(runOption)) {
+        printError(App::tr("--run opens a window, --screenshot does not: give one of them"));
+        return kExitUsage;
+    }
     if (parser.isSet(screenshotOption)) {
         return runScreenshot(parser.value(screenshotOption), parser.value(runForOption),
                              parser.value(sizeOption), scenePath);
@@ -255,5 +269,10 @@ int main(int argc, char* argv[])
     window.show();
     if (!scenePath.isEmpty())
         printProblems(scenePath, window.openStartupScene(scenePath));
+    view::Autosave autosave(window.document(), view::Autosave::defaultFolder(),
+                            view::Autosave::intervalFromEnvironment());
+    view::offerRecovery(&window, autosave);
+    if (parser.isSet(runOption))
+        window.playAction()->setChecked(true);
     return QApplication::exec();
 }

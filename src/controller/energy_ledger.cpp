@@ -16,7 +16,6 @@ namespace {
 struct Dissipation {
     Scalar drag = 0;
     Scalar springDamping = 0;
-    Scalar softDamping = 0;
 };
 
 /// Velocity of the material point at world point `at` of a body in state s, m/s.
@@ -36,8 +35,9 @@ Scalar damperPower(Scalar c, const Vec2& endA, const Vec2& endB, const Vec2& vel
     return c * rate * rate;
 }
 
-/// The drag, spring damping and soft damping power of the world in `states`, by the laws of
-/// force_model.h: the forces' own terms, evaluated apart so that each cause gets its share.
+/// The drag and spring damping power of the world in `states`, by the laws of force_model.h: the
+/// forces' own terms, evaluated apart so that each cause gets its share. (A soft grid's damping is
+/// no force there but a pass of its own, booked by afterSoftDamping.)
 Dissipation dissipation(const model::World& world, std::span<const model::BodyState> states)
 {
     Dissipation p;
@@ -58,40 +58,9 @@ Dissipation dissipation(const model::World& world, std::span<const model::BodySt
         const model::Body& body = world.bodies[grid.body.index];
         const model::BodyState* s = states.data() + offset;
         offset += grid.size();
-        const Scalar m = grid.ellipseMass;
         // Each ellipse's share b·m/M of the body's drag.
         for (std::size_t i = 0; i < grid.size(); ++i)
-            p.drag += b * m * body.invMass * s[i].velocity.squaredNorm();
-        for (const model::SoftSpring& spring : grid.springs) {
-            p.softDamping += damperPower(spring.damping, s[spring.a].position, s[spring.b].position,
-                                         s[spring.a].velocity, s[spring.b].velocity);
-        }
-        // Internal damping β·m·(v − v_rigid) with the grid's rigid motion: the mean velocity and
-        // the angular velocity Σ p × (v − v_c) / Σ |p|² about the centre.
-        if (grid.size() == 0)
-            continue;
-        Vec2 centre = Vec2::Zero();
-        Vec2 velocity = Vec2::Zero();
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            centre += s[i].position;
-            velocity += s[i].velocity;
-        }
-        const auto n = static_cast<Scalar>(grid.size());
-        centre /= n;
-        velocity /= n;
-        Scalar spin = 0;
-        Scalar spread = 0;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const Vec2 q = s[i].position - centre;
-            spin += cross(q, Vec2(s[i].velocity - velocity));
-            spread += q.squaredNorm();
-        }
-        const Scalar omega = spread > 0 ? spin / spread : 0;
-        const Scalar rate = constants::kSoftInternalDampingRate + softShapeMatchingDamping(grid, body) / m;
-        for (std::size_t i = 0; i < grid.size(); ++i) {
-            const Vec2 rigid = velocity + cross(omega, Vec2(s[i].position - centre));
-            p.softDamping += m * rate * (s[i].velocity - rigid).dot(s[i].velocity);
-        }
+            p.drag += b * grid.ellipseMass * body.invMass * s[i].velocity.squaredNorm();
     }
     return p;
 }
@@ -189,11 +158,16 @@ void EnergyLedger::afterIntegration(const model::World& world, std::span<const m
     const Dissipation b = dissipation(world, end);
     const Scalar drag = 0.5 * h * (a.drag + b.drag);
     const Scalar springDamping = 0.5 * h * (a.springDamping + b.springDamping);
-    const Scalar softDamping = 0.5 * h * (a.softDamping + b.softDamping);
     m_losses.drag += drag;
     m_losses.springDamping += springDamping;
-    m_losses.softDamping += softDamping;
-    m_smoothLoss += drag + springDamping + softDamping;
+    m_smoothLoss += drag + springDamping;
+}
+
+void EnergyLedger::afterSoftDamping(Scalar kinetic)
+{
+    // Only velocities changed, by exactly this much kinetic energy: the substep goes on from there.
+    m_losses.softDamping += kinetic;
+    m_substepStart -= kinetic;
 }
 
 void EnergyLedger::beforeVelocities(std::span<const SolverBody> bodies,

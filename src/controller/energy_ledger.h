@@ -30,7 +30,8 @@ struct EnergyLosses {
     Scalar drag = 0;
     /// Damping of scene springs, ∫ c·(dL/dt)² dt (trapezoidal rule), J.
     Scalar springDamping = 0;
-    /// A soft body's grid-spring damping and internal damping, ∫ Σ m·β·(v − v_rigid)·v + c·(dL/dt)² dt, J.
+    /// A soft body's grid-spring damping, shape matching's damping and internal damping: the
+    /// kinetic energy the damping pass took out (soft_damping.h), J.
     Scalar softDamping = 0;
     /// The joints' position correction: moving bodies back onto their rods and pins changes their
     /// height and their springs' stretch, J.
@@ -91,6 +92,8 @@ public:
     /// After the impacts: `normalWork` is the work of their normal impulses at the times of
     /// impact, `frictionWork` that of friction during them, J (≤ 0 each).
     void afterImpacts(std::span<const SolverBody> bodies, Scalar normalWork, Scalar frictionWork);
+    /// After the soft grids' damping pass, before the impacts: it took `kinetic` J out (≥ 0).
+    void afterSoftDamping(Scalar kinetic);
     /// After the integrator: the smooth forces' dissipation over [start, end], h seconds long.
     void afterIntegration(const model::World& world, std::span<const model::BodyState> start,
                           std::span<const model::BodyState> end, Scalar h);

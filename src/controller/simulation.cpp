@@ -499,6 +499,15 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     const std::size_t total = stateCount(world);
     if (m_ledger)
         m_ledger->beginSubstep(world);
+    // The soft grids' damping, as a pass of its own before anything reads the velocities: stable
+    // at any step, so that a strongly damped grid is never unstable (soft_damping.h). A world
+    // with soft bodies always finds its contacts here (substepsFor never collides for it), after
+    // the pass.
+    if (!world.softBodies.empty()) {
+        const Scalar damped = dampSoftGrids(world, h, m_dampingScratch);
+        if (m_ledger)
+            m_ledger->afterSoftDamping(damped);
+    }
 
     // Phases 0 and 1: the start of the step and its collisions (startAndCollide). A later substep
     // of a step that found its contacts for the whole step only takes the start states afresh.

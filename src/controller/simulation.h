@@ -8,6 +8,7 @@
 #include "controller/dynamics/contact_solver.h"
 #include "controller/integration/integrator.h"
 #include "controller/dynamics/joint_solver.h"
+#include "controller/soft/soft_damping.h"
 #include "controller/soft/soft_stability.h"
 #include "controller/task_pair.h"
 #include "model/constants.h"
@@ -178,6 +179,7 @@ private:
     SoftStability m_stability;
     std::vector<Vec2> m_scratchPositions;
     std::vector<Vec2> m_scratchVelocities;
+    SoftDampingScratch m_dampingScratch; ///< the soft grids' damping pass's working arrays
     std::vector<Scalar> m_margins;
     std::vector<BroadPhaseProxy> m_proxies;
     std::vector<ProxyPair> m_pairs;

@@ -4,6 +4,7 @@
 /// geometry derived from them.
 
 #include "model/color.h"
+#include "model/constants.h"
 #include "model/scalar.h"
 #include "model/shape.h"
 
@@ -40,14 +41,38 @@ struct MassSpec {
     bool operator==(const MassSpec&) const = default; ///< memberwise equality
 };
 
+/// How a soft body's grid-spring damping is given (scene keys `dampingRatio` and `damping`).
+enum class SoftDampingMode {
+    /// A damping ratio ζ, dimensionless: every grid spring gets c = 2ζ·√(k·m_eff), with m_eff the
+    /// reduced mass of the two ellipses it joins (docs/physics.md, "Soft mode").
+    Ratio,
+    /// A damping coefficient c in N·s/m, the same for every grid spring.
+    Coefficient,
+};
+
 /// Soft-mode settings (scene key `soft`). The body is then simulated as a grid of small ellipses
 /// joined by springs; see docs/physics.md.
 struct SoftSettings {
     bool autoDensity = false; ///< true: pick ellipsesPerSquareMeter from this machine's speed
     Scalar ellipsesPerSquareMeter = 64; ///< grid density n, 1/m² (cell side 1/√n); typical 64–1024
     Scalar stiffness = 2000; ///< spring constant of the grid springs, N/m
-    Scalar damping = 1.0; ///< damping of the grid springs along their length, N·s/m
+    /// Which of dampingRatio and damping applies; the other is kept but not used.
+    SoftDampingMode dampingMode = SoftDampingMode::Ratio;
+    /// Damping ratio ζ of the grid springs, dimensionless (1 = critical for a pair of ellipses);
+    /// used when dampingMode is Ratio. The default lands a soft box nearly dead (docs/physics.md).
+    Scalar dampingRatio = constants::kDefaultSoftDampingRatio;
+    /// Damping of the grid springs along their length, N·s/m; used when dampingMode is Coefficient.
+    Scalar damping = 1.0;
     bool operator==(const SoftSettings&) const = default; ///< memberwise equality
+};
+
+/// The state of a soft body's grid as a scene file keeps it (scene key `soft.state`, an addition to
+/// the contract): where every ellipse is and how it moves, in the order the grid numbers them
+/// (row by row from the bottom left of the lattice).
+struct SoftGridState {
+    std::vector<Vec2> positions; ///< ellipse centres, world, m
+    std::vector<Vec2> velocities; ///< m/s, one per position
+    bool operator==(const SoftGridState&) const = default; ///< memberwise equality
 };
 
 /// The kinematic state of a body.
@@ -90,6 +115,10 @@ struct Body {
     bool fixed = false;
     Color color; ///< fill colour in the app (scene key `color`)
     std::optional<SoftSettings> soft; ///< present: soft mode
+    /// A soft body's grid state read from a file saved mid-run. controller::prepareSoftBodies puts
+    /// the grid there when it first builds it (if the counts match) and then clears this; a file
+    /// written later takes the state from the grid itself. Empty for a body read without one.
+    std::optional<SoftGridState> softState;
 
     // Derived by updateDerived().
     Scalar area = 0; ///< m²

@@ -265,30 +265,62 @@ inline constexpr int kSoftAutoTrialFrames = 3;
 /// 1024 per m² (1024 ellipses × 14 substeps), as the timing gave there when idle. docs/cli.md.
 inline constexpr std::size_t kSoftAutoHeadlessBudget = 16384;
 
-/// Largest |λ|·h at which RK4 is used on a soft grid, with λ the fastest grid eigenvalue. RK4's
-/// stability region reaches 2.83 along the imaginary axis and 2.79 along the negative real axis;
-/// 2.5 keeps a margin for the bound's looseness in between.
+/// Largest ω·h at which RK4 is used on a soft grid, with ω the fastest grid vibration. RK4's
+/// stability region reaches 2.83 along the imaginary axis, and followed by the grid's damping pass
+/// (soft_damping.h) it stays stable there whatever share of the velocity the pass keeps (3.46 when
+/// it keeps none); 2.5 keeps a margin for the bound on ω.
 inline constexpr Scalar kRk4SoftStabilityLimit = 2.5;
 
-/// Semi-implicit Euler is stable on a damped oscillator when ω²h² + 2·γ·h < 4 (γ the damping rate
-/// c/m); the soft grid is stepped so that the left side stays below this, i.e. (0.9·2)².
-inline constexpr Scalar kSemiImplicitEulerSoftStabilityLimit = 3.24;
+/// Semi-implicit Euler followed by the grid's damping pass (soft_damping.h), which keeps a share e
+/// of a mode's velocity, is stable while ω²h² < 2·(1 + e): 4 undamped, 2 for the fastest modes of a
+/// strongly damped grid, whose velocity the pass all but stops. The soft grid is stepped with ω²h²
+/// at most this, (0.9)² of the limit for e = 0, whatever the damping.
+inline constexpr Scalar kSemiImplicitEulerSoftStabilityLimit = 1.62;
 
 /// An ellipse held by a contact force ends its step at x₀ + h·v (so that it rests exactly, as a
-/// rigid body does): semi-implicit Euler's position update, stable while ω·h < 2. Every soft grid
-/// is therefore stepped with ω·h at most this, whatever the integrator (0.9 of the limit).
+/// rigid body does): semi-implicit Euler's position update, stable while ω·h < 2 undamped (with
+/// RK4's velocity, < 2.45 whatever the damping pass keeps). Every soft grid is therefore stepped
+/// with ω·h at most this, whatever the integrator (0.9 of 2); under semi-implicit and explicit
+/// Euler, kSemiImplicitEulerSoftStabilityLimit bounds it further.
 /// Measured: a resting 256/m² box keeps a residual jitter of ~1e-6 J here and ~1e-7 J at half of it.
 inline constexpr Scalar kSoftContactStabilityLimit = 1.8;
 
-/// Explicit Euler is stable on a damped oscillator only while h ≤ 2ζ/ω, which for the grid's
-/// damping (proportional to its stiffness) is h ≤ c/k, and h ≤ 2/γ for overdamped motion. The step
-/// is kept at this fraction of those limits.
+/// Explicit Euler grows an undamped mode by √(1 + ω²h²) a step; the grid's damping pass, which
+/// for its stiffness-proportional damping keeps e = exp(−(c/k)·ω²·h) of the mode's velocity, makes
+/// up for it while e·(1 + ω²h²) ≤ 1, for every mode while h ≤ c/k. The step is kept at this
+/// fraction of c/k.
 inline constexpr Scalar kExplicitEulerSoftSafety = 0.9;
+
+/// Largest 2c·h/m per substep, dimensionless, for a soft grid's damping pass (soft_damping.h),
+/// with 2c/m the rate at which a grid spring of damping c alone stops the relative motion of its
+/// two ellipses of mass m. The pass is exact for each spring alone and stable at any step, but a
+/// pass that all but stops the springs' relative motion (2c·h/m ≫ 1) leaves the grid undamped
+/// for the rest of the substep, and it meets a landing more elastically than its damping says:
+/// the default soft box (ζ = 2) dropped on plastic ground rebounds at 0.38 with 3 substeps of
+/// 1/240 s (2c·h/m = 2.8), 0.29 with 10, 0.27 with 14 and 0.24 in the limit. This bound keeps the
+/// landing within a few hundredths of the limit (docs/physics.md, "Soft landings").
+inline constexpr Scalar kSoftDampingPassLimit = 0.75;
+
+/// Relative residual |M·v' + h·C·v' − M·v| / |M·v| at which the soft grids' damping pass stops its
+/// conjugate gradients (soft_damping.h): far below anything the kinetic energy or the momentum
+/// checks would see, and reached in a few dozen iterations at any damping the substeps allow.
+inline constexpr Scalar kSoftDampingSolveTolerance = 1e-12;
+
+/// Most conjugate-gradient iterations of the damping pass: a safety bound, never reached in the
+/// tests (the residual falls by at least 3× an iteration when 2c·h/m ≤ kSoftDampingPassLimit).
+inline constexpr int kSoftDampingSolveIterations = 200;
 
 /// Most substeps one step is split into for a soft grid. Beyond it the grid is too stiff for the
 /// step (or explicit Euler has no damping to be stable with) and the user is told so; 64 substeps
 /// of the default 1/240 s step are 65 µs.
 inline constexpr int kMaxSoftSubsteps = 64;
+
+/// Default damping ratio ζ of a soft body's grid springs (SoftSettings::dampingRatio), dimensionless.
+/// Each spring gets c = 2ζ·√(k·m/2) for ellipses of mass m. Chosen so that the default soft box
+/// (1 m, 1 kg, 64 per m², 2000 N/m) dropped on plastic ground rebounds at well under 0.3 of its
+/// landing speed at 1/240 s and 1/60 s (tests/controller/soft_landing_test.cpp), while a crushed
+/// box still recovers its shape. Measured values are in docs/physics.md, "Soft landings".
+inline constexpr Scalar kDefaultSoftDampingRatio = 2.0;
 
 /// Rate of the soft grids' internal damping, 1/s: every ellipse feels F = −β·m·(v − v_rigid),
 /// where v_rigid is the velocity it would have if the grid moved rigidly (the aggregate's v + ω × r).

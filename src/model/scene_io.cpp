@@ -477,7 +477,9 @@ constexpr std::array<std::string_view, 3> kEllipseKeys = {"type", "radiusX", "ra
 constexpr std::array<std::string_view, 3> kBoxKeys = {"type", "width", "height"};
 constexpr std::array<std::string_view, 2> kPolygonKeys = {"type", "vertices"};
 constexpr std::array<std::string_view, 4> kShapeTypes = {"circle", "ellipse", "box", "polygon"};
-constexpr std::array<std::string_view, 3> kSoftKeys = {"ellipsesPerSquareMeter", "stiffness", "damping"};
+constexpr std::array<std::string_view, 5> kSoftKeys = {"ellipsesPerSquareMeter", "stiffness", "dampingRatio", "damping",
+                                                       "state"};
+constexpr std::array<std::string_view, 2> kSoftStateKeys = {"positions", "velocities"};
 constexpr std::array<std::string_view, 7> kSpringKeys = {"bodyA",     "anchorA", "bodyB",     "anchorB",
                                                          "stiffness", "damping", "restLength"};
 constexpr std::array<std::string_view, 4> kPinKeys = {"type", "bodyA", "bodyB", "anchor"};
@@ -816,7 +818,7 @@ private:
             }
         }
         if (const Json* soft = find(value, "soft"))
-            readSoft(*soft, memberPath(path, "soft"), body.soft);
+            readSoft(*soft, memberPath(path, "soft"), body);
 
         if (m_problems.size() != before || !shapeOk)
             return false;
@@ -898,7 +900,7 @@ private:
             report(path, issue.message);
     }
 
-    void readSoft(const Json& value, const std::string& path, std::optional<SoftSettings>& soft)
+    void readSoft(const Json& value, const std::string& path, Body& body)
     {
         if (!expectObject(value, path))
             return;
@@ -916,8 +918,57 @@ private:
             }
         }
         optionalNumber(value, "stiffness", path, Bound::Positive, settings.stiffness);
+        // The damping is a ratio ζ (the default) or a coefficient in N·s/m, never both: two
+        // sources for one value could disagree.
+        const bool hasRatio = find(value, "dampingRatio") != nullptr;
+        const bool hasCoefficient = find(value, "damping") != nullptr;
+        if (hasRatio && hasCoefficient)
+            report(path, "give either 'dampingRatio' or 'damping', not both");
+        optionalNumber(value, "dampingRatio", path, Bound::NonNegative, settings.dampingRatio);
         optionalNumber(value, "damping", path, Bound::NonNegative, settings.damping);
-        soft = settings;
+        if (hasCoefficient && !hasRatio)
+            settings.dampingMode = SoftDampingMode::Coefficient;
+        body.soft = settings;
+        if (const Json* state = find(value, "state"))
+            readSoftState(*state, memberPath(path, "state"), body.softState);
+    }
+
+    /// A list of [x, y] vectors, every one finite.
+    std::vector<Vec2> vectorList(const Json& value, const std::string& path)
+    {
+        std::vector<Vec2> list;
+        if (!expectArray(value, path))
+            return list;
+        list.reserve(value.size());
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (const std::optional<Vec2> v = vector2(value[i], elementPath(path, i)))
+                list.push_back(*v);
+        }
+        return list;
+    }
+
+    void readSoftState(const Json& value, const std::string& path, std::optional<SoftGridState>& state)
+    {
+        if (!expectObject(value, path))
+            return;
+        checkKeys(value, path, kSoftStateKeys);
+        const std::size_t before = m_problems.size();
+        const Json* positions = require(value, "positions", path);
+        const Json* velocities = require(value, "velocities", path);
+        if (!positions || !velocities)
+            return;
+        SoftGridState read;
+        read.positions = vectorList(*positions, memberPath(path, "positions"));
+        read.velocities = vectorList(*velocities, memberPath(path, "velocities"));
+        if (m_problems.size() != before)
+            return;
+        if (read.positions.empty())
+            report(memberPath(path, "positions"), "a grid has at least one ellipse (got an empty list)");
+        else if (read.positions.size() != read.velocities.size())
+            report(path, "expected one velocity per position (got " + std::to_string(read.positions.size()) +
+                             " positions and " + std::to_string(read.velocities.size()) + " velocities)");
+        else
+            state = std::move(read);
     }
 
     // ---- Springs and joints ------------------------------------------------------------------
@@ -1137,7 +1188,40 @@ OrderedJson shapeJson(const Shape& shape)
     return out;
 }
 
-OrderedJson bodyJson(const Body& body)
+/// A soft grid's state: written when the grid has moved on its own (a step deformed it), so that a
+/// scene saved mid-run continues exactly. A grid that is still a rigid copy of its body, or a body
+/// without a grid, is written without it and gets a fresh grid at load, as before.
+std::optional<OrderedJson> softStateJson(const Body& body, const SoftGrid* grid)
+{
+    const SoftGridState* state = nullptr;
+    SoftGridState fromGrid;
+    // A grid that no longer describes its body (edited since the run: it is placed or built again
+    // at the next step) is not saved either.
+    const bool current = grid && body.soft && grid->shape == body.shape && grid->massSpec == body.massSpec &&
+                         grid->settings == *body.soft && grid->ownerState == body.state;
+    if (current && !grid->rigidCopy) {
+        fromGrid.positions = grid->positions;
+        fromGrid.velocities = grid->velocities;
+        state = &fromGrid;
+    } else if (body.softState) {
+        // Read from a file and not yet built into a grid: kept as it was.
+        state = &*body.softState;
+    }
+    if (!state)
+        return std::nullopt;
+    OrderedJson positions = OrderedJson::array();
+    for (const Vec2& p : state->positions)
+        positions.push_back(vectorJson(p));
+    OrderedJson velocities = OrderedJson::array();
+    for (const Vec2& v : state->velocities)
+        velocities.push_back(vectorJson(v));
+    OrderedJson out = OrderedJson::object();
+    out["positions"] = std::move(positions);
+    out["velocities"] = std::move(velocities);
+    return out;
+}
+
+OrderedJson bodyJson(const Body& body, const SoftGrid* grid)
 {
     OrderedJson out = OrderedJson::object();
     out["name"] = body.name;
@@ -1158,7 +1242,12 @@ OrderedJson bodyJson(const Body& body)
         else
             soft["ellipsesPerSquareMeter"] = body.soft->ellipsesPerSquareMeter;
         soft["stiffness"] = body.soft->stiffness;
-        soft["damping"] = body.soft->damping;
+        if (body.soft->dampingMode == SoftDampingMode::Ratio)
+            soft["dampingRatio"] = body.soft->dampingRatio;
+        else
+            soft["damping"] = body.soft->damping;
+        if (std::optional<OrderedJson> state = softStateJson(body, grid))
+            soft["state"] = std::move(*state);
         out["soft"] = std::move(soft);
     }
     return out;
@@ -1218,8 +1307,8 @@ OrderedJson sceneJson(const World& world)
     settings["drag"] = world.settings.drag;
     out["world"] = std::move(settings);
     OrderedJson bodies = OrderedJson::array();
-    for (const Body& body : world.bodies)
-        bodies.push_back(bodyJson(body));
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i)
+        bodies.push_back(bodyJson(world.bodies[i], world.softGrid(BodyId{i})));
     out["bodies"] = std::move(bodies);
     OrderedJson springs = OrderedJson::array();
     for (const Spring& spring : world.springs)

@@ -38,7 +38,6 @@ struct SoftSpringField {
     std::int32_t begin = 0;
     std::int32_t end = 0; ///< see begin
     std::vector<Scalar> stiffness; ///< per cell (columns × rows, row-major): k, N/m
-    std::vector<Scalar> damping; ///< per cell: c, N·s/m
     std::vector<Scalar> restLength; ///< per cell: L₀, m
     bool operator==(const SoftSpringField&) const = default; ///< memberwise equality
 };
@@ -66,10 +65,11 @@ struct SoftGrid {
     /// Differs from zero (the shape's centroid) by at most about a cell for an asymmetric shape.
     Vec2 restCentre = Vec2::Zero();
     Scalar ellipseMass = 0; ///< mass of every ellipse, kg
+    /// Damping c of every grid spring, N·s/m: settings.damping, or 2ζ·√(k·m/2) from
+    /// settings.dampingRatio (controller::softSpringDamping).
+    Scalar springDamping = 0;
     /// Bound on ω² of the fastest grid vibration, 1/s²: max over ellipses of 2·λmax(Σ k·u·uᵀ)/m.
     Scalar maxSpringRate = 0;
-    /// The same bound for the spring damping, 1/s: max over ellipses of 2·λmax(Σ c·u·uᵀ)/m.
-    Scalar maxDampingRate = 0;
 
     std::vector<std::int32_t> cellEllipse; ///< columns × rows, row-major: ellipse index or −1
     std::vector<std::int32_t> ellipseCell; ///< per ellipse: its cell, row·columns + column
@@ -84,6 +84,9 @@ struct SoftGrid {
     /// The state last written to the owning body. A body whose state differs was moved by hand
     /// (the editor), and its grid is placed again as a rigid copy of the new state.
     BodyState ownerState;
+    /// True while the grid is a rigid copy of its body's state (controller::placeSoftGrid), false
+    /// once a step has moved it on its own. A saved scene keeps the grid's state only when false.
+    bool rigidCopy = true;
 
     bool operator==(const SoftGrid&) const = default; ///< memberwise equality
 

@@ -3,6 +3,7 @@
 #include "view/message_label.h"
 
 #include "controller/diagnostics.h"
+#include "controller/soft/soft_body_builder.h"
 #include "model/polygon.h"
 #include "view/lesson_session.h"
 #include "view/view_constants.h"
@@ -36,6 +37,15 @@
 namespace impetus::view {
 
 namespace {
+
+/// `soft` with a damping ratio of 1: controller::softSpringDamping then gives 2·√(k·m/2), the
+/// coefficient that one unit of ζ stands for.
+model::SoftSettings ratioOne(model::SoftSettings soft)
+{
+    soft.dampingMode = model::SoftDampingMode::Ratio;
+    soft.dampingRatio = 1;
+    return soft;
+}
 
 /// Significant digits a number is shown with. Six reads well in a narrow pane and is finer than
 /// anything a student measures; a value the user does not touch keeps its full precision, because
@@ -135,7 +145,7 @@ std::optional<model::BodyAttribute> bodyAttributeOf(const QString& name)
         {"massMode", A::Mass},       {"density", A::Mass},          {"mass", A::Mass},
         {"restitution", A::Restitution}, {"friction", A::Friction}, {"fixed", A::Fixed},
         {"color", A::FillColor},     {"soft", A::Soft},             {"softDensity", A::Soft},
-        {"softStiffness", A::Soft},  {"softDamping", A::Soft}};
+        {"softStiffness", A::Soft},  {"softDamping", A::Soft},        {"softDampingRatio", A::Soft}};
     for (const auto& [field, attribute] : kFields) {
         if (name == QLatin1String(field))
             return attribute;
@@ -497,11 +507,37 @@ void PropertyPane::buildBodyPage()
                                  [this] { return m_body.soft.value_or(model::SoftSettings{}).stiffness; },
                                  editBody([](model::Body& b, double v) { b.soft.value().stiffness = v; },
                                           tr("Change soft stiffness")));
-    m_softDamping = &addNumber(Page::Body, form, QStringLiteral("softDamping"), tr("Soft damping"), tr("N·s/m"),
-                               Bound::NonNegative,
-                               [this] { return m_body.soft.value_or(model::SoftSettings{}).damping; },
-                               editBody([](model::Body& b, double v) { b.soft.value().damping = v; },
-                                        tr("Change soft damping")));
+    // The damping as a ratio ζ (what the body is given by default) and as the coefficient c of
+    // each grid spring. Both always show; typing one makes it the one the body keeps, and the
+    // other then shows its equivalent for the grid as built (controller::softSpringDamping).
+    m_softDampingRatio = &addNumber(
+        Page::Body, form, QStringLiteral("softDampingRatio"), tr("Soft damping ratio ζ"), QString(), Bound::NonNegative,
+        [this] {
+            const model::SoftSettings soft = m_body.soft.value_or(model::SoftSettings{});
+            if (soft.dampingMode == model::SoftDampingMode::Ratio || !(m_softEllipseMass > 0))
+                return soft.dampingRatio;
+            return soft.damping / controller::softSpringDamping(ratioOne(soft), m_softEllipseMass);
+        },
+        editBody(
+            [](model::Body& b, double v) {
+                b.soft.value().dampingMode = model::SoftDampingMode::Ratio;
+                b.soft.value().dampingRatio = v;
+            },
+            tr("Change soft damping ratio")));
+    m_softDamping = &addNumber(
+        Page::Body, form, QStringLiteral("softDamping"), tr("Soft damping"), tr("N·s/m"), Bound::NonNegative,
+        [this] {
+            const model::SoftSettings soft = m_body.soft.value_or(model::SoftSettings{});
+            if (soft.dampingMode == model::SoftDampingMode::Coefficient || !(m_softEllipseMass > 0))
+                return soft.damping;
+            return controller::softSpringDamping(soft, m_softEllipseMass);
+        },
+        editBody(
+            [](model::Body& b, double v) {
+                b.soft.value().dampingMode = model::SoftDampingMode::Coefficient;
+                b.soft.value().damping = v;
+            },
+            tr("Change soft damping")));
 
     // Arrows for this body alone, on top of the View menu's: how the canvas shows the body, not
     // what it is, so a tick is no edit and has no undo.
@@ -987,7 +1023,9 @@ void PropertyPane::load(const model::World& world)
         // What the engine made of a soft body: how many ellipses, at which density (the one
         // "auto" chose on this machine).
         m_softGridText.clear();
+        m_softEllipseMass = 0;
         if (const model::SoftGrid* grid = world.softGrid(model::BodyId{static_cast<std::uint32_t>(body)})) {
+            m_softEllipseMass = grid->ellipseMass;
             const bool automatic = m_body.soft && m_body.soft->autoDensity;
             m_softGridText = (automatic ? tr("%L1 ellipses at %L2 per m², chosen by “auto” on this computer")
                                         : tr("%L1 ellipses at %L2 per m²"))
@@ -1179,6 +1217,7 @@ void PropertyPane::displayBody(bool replaceFocused)
     m_softDensity->setEnabled(m_body.soft.has_value());
     m_softStiffness->edit->setEnabled(m_body.soft.has_value());
     m_softDamping->edit->setEnabled(m_body.soft.has_value());
+    m_softDampingRatio->edit->setEnabled(m_body.soft.has_value());
     displaySoftDensity(replaceFocused);
     m_softGrid->setText(m_softGridText);
     m_softGrid->setVisible(!m_softGridText.isEmpty());

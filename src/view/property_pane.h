@@ -229,7 +229,10 @@ private:
     std::function<bool(const std::string&, VectorKind)> m_bodyVectorsShown;
     QLabel* m_worldWarnings = nullptr; ///< world page: why the settings may give wrong results
     NumberField* m_softStiffness = nullptr;
-    NumberField* m_softDamping = nullptr;
+    NumberField* m_softDamping = nullptr; ///< c of each grid spring, N·s/m
+    NumberField* m_softDampingRatio = nullptr; ///< ζ, dimensionless
+    /// Mass of each ellipse of the shown soft body's grid, kg; 0 when it has no grid yet.
+    double m_softEllipseMass = 0;
     QLineEdit* m_springBodyA = nullptr;
     QLineEdit* m_springBodyB = nullptr;
     QLineEdit* m_jointType = nullptr;

@@ -99,7 +99,7 @@ void SceneDocument::setScene(model::World world, const QString& filePath, const 
     emit modifiedChanged(false);
 }
 
-std::optional<QString> SceneDocument::saveAs(const QString& path)
+model::World SceneDocument::worldToSave() const
 {
     // A pin is saved by its world point, from which loading derives the body-frame anchors. Bodies
     // may have been moved or run since the pin was made, so the point written is where the hinge
@@ -109,9 +109,14 @@ std::optional<QString> SceneDocument::saveAs(const QString& path)
         if (joint.type == model::JointType::Pin)
             joint.worldAnchor = joint.bodyB ? toSave.body(joint.bodyA).worldPoint(joint.anchorA) : joint.anchorB;
     }
+    return toSave;
+}
+
+std::optional<QString> SceneDocument::saveAs(const QString& path)
+{
     const QByteArray native = QFile::encodeName(path);
     if (const std::optional<std::string> error =
-            model::saveSceneFile(std::filesystem::path(native.toStdString()), toSave))
+            model::saveSceneFile(std::filesystem::path(native.toStdString()), worldToSave()))
         return QString::fromStdString(*error);
     m_filePath = path;
     m_displayName = sceneDisplayName(path);

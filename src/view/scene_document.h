@@ -80,6 +80,10 @@ public:
     /// the selection; the document is unmodified. Emits worldChanged() and sceneReplaced().
     void setScene(model::World world, const QString& filePath, const QString& displayName);
 
+    /// The world as a file should hold it: every pin's world anchor moved to where its hinge is
+    /// now (bodies may have moved or run since the pin was made).
+    model::World worldToSave() const;
+
     /// Saves the world to `path` atomically (model::saveSceneFile). On success the document takes
     /// that path and name and is unmodified; on failure it returns the message and nothing changes.
     std::optional<QString> saveAs(const QString& path);

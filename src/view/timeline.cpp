@@ -36,7 +36,7 @@ std::size_t gridHeapBytes(const model::SoftGrid& grid)
     std::size_t bytes = heapBytes(grid.cellEllipse) + heapBytes(grid.ellipseCell) + heapBytes(grid.restPositions) +
                         heapBytes(grid.springs) + heapBytes(grid.positions) + heapBytes(grid.velocities);
     for (const model::SoftSpringField& field : grid.springFields)
-        bytes += heapBytes(field.stiffness) + heapBytes(field.damping) + heapBytes(field.restLength);
+        bytes += heapBytes(field.stiffness) + heapBytes(field.restLength);
     return bytes;
 }
 

@@ -28,12 +28,14 @@ using testing::withMaterial;
 
 constexpr Scalar kH = 1.0 / 240.0;
 
-/// `body` in soft mode at `density` ellipses per m².
+/// `body` in soft mode at `density` ellipses per m², its springs damped with the coefficient
+/// `damping` (N·s/m).
 model::Body soft(model::Body body, Scalar density, Scalar stiffness = 2000, Scalar damping = 1)
 {
     model::SoftSettings settings;
     settings.ellipsesPerSquareMeter = density;
     settings.stiffness = stiffness;
+    settings.dampingMode = model::SoftDampingMode::Coefficient;
     settings.damping = damping;
     body.soft = settings;
     return body;
@@ -315,8 +317,11 @@ TEST(SoftBody, CrushedUnderAHeavyBoxItRecoversItsShape)
         }
     };
     steps(5.0);
-    const Scalar crushed = controller::softLatticeArea(world.softBodies[0]) / restArea;
-    EXPECT_LT(crushed, 0.97); // 20 kg really squeezes it (196 N on springs of 2000 N/m)
+    // 20 kg really squeezes it (196 N on springs of 2000 N/m): 92% of its area at the deepest.
+    // Where it settles under the weight depends on where friction catches its bottom and top rows
+    // as the weight lands (96% to 99% for drops of 2 to 5 cm), so the squeeze is checked at the
+    // deepest.
+    EXPECT_LT(smallest, 0.97);
     EXPECT_EQ(inverted, 0);
 
     // Lift the weight off: take it far away, where it falls on its own.
@@ -423,6 +428,10 @@ TEST(SoftBody, ItsPathApproachesTheRigidBodysAsTheDensityGrows)
         model::SoftSettings settings;
         settings.ellipsesPerSquareMeter = n;
         settings.stiffness = 20000;
+        // The coefficient this test was measured with (the default before the damping ratio): the
+        // default ζ on so stiff and fine a grid needs more than the 64 substeps allowed.
+        settings.dampingMode = model::SoftDampingMode::Coefficient;
+        settings.damping = 1;
         const controller::RigidSoftComparison c =
             controller::compareRigidSoft(world, model::BodyId{0}, 480, 12, settings);
         EXPECT_EQ(c.ellipsesPerSquareMeter, n);
@@ -544,11 +553,8 @@ TEST(SoftStability, SubstepsWhenTheGridIsTooStiffAndSaysSo)
     world.bodies.push_back(soft(makeBox("jelly", 1, 1, 1, Vec2(0, 2)), 256));
     controller::prepareSoftBodies(world);
     const model::SoftGrid& grid = world.softBodies[0];
-    // 8k/m for the uniform lattice, 8 · 2000 · 256, plus shape matching's κ·k/M (and the
-    // damping's 8c/m + β + shape matching's κ·c/M).
+    // 8k/m for the uniform lattice, 8 · 2000 · 256, plus shape matching's κ·k/M.
     EXPECT_NEAR(grid.maxSpringRate, 8 * 2000 * 256.0 + constants::kSoftShapeMatching * 2000 / 1.0, 1e-6);
-    EXPECT_NEAR(grid.maxDampingRate,
-                8 * 1 * 256.0 + constants::kSoftInternalDampingRate + constants::kSoftShapeMatching * 1 / 1.0, 1e-9);
     for (const model::IntegratorKind kind :
          {model::IntegratorKind::Euler, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Rk4}) {
         world.settings.integrator = kind;
@@ -582,8 +588,8 @@ TEST(SoftStability, EveryIntegratorStaysStableAcrossTheStiffnessRange)
     // (explicit Euler: 5,000) at 64 to 256 per m². A stretched body released without gravity must lose energy.
     for (const model::IntegratorKind kind :
          {model::IntegratorKind::Euler, model::IntegratorKind::SemiImplicitEuler, model::IntegratorKind::Rk4}) {
-        // Explicit Euler is stable only while h ≤ β/λ² (shape matching): up to k ≈ 6,900 N/m for
-        // a 1 kg body at 64 substeps.
+        // Explicit Euler, with the damping pass, is stable only while h ≤ c/k: up to k ≈ 13,800 N/m
+        // at c = 1 N·s/m and 64 substeps.
         const Scalar stiffest = kind == model::IntegratorKind::Euler ? 5000.0 : 20000.0;
         for (const auto& [stiffness, density] : {std::pair{100.0, 64.0}, std::pair{stiffest, 256.0}}) {
             model::World world = makeEmptyWorld(kind, kH);

@@ -260,6 +260,18 @@ const BadSceneCase kBadScenes[] = {
      "bodies[0].soft.ellipsesPerSquareMeter", "expected a number or \"auto\", got \"many\""},
     {"soft_zero_stiffness", ballScene(R"(,"soft":{"stiffness":0})"), "bodies[0].soft.stiffness", "must be greater than 0"},
     {"soft_negative_damping", ballScene(R"(,"soft":{"damping":-1})"), "bodies[0].soft.damping", "must be 0 or greater"},
+    {"soft_negative_damping_ratio", ballScene(R"(,"soft":{"dampingRatio":-1})"), "bodies[0].soft.dampingRatio",
+     "must be 0 or greater"},
+    {"soft_ratio_and_coefficient", ballScene(R"(,"soft":{"dampingRatio":1,"damping":2})"), "bodies[0].soft",
+     "give either 'dampingRatio' or 'damping', not both"},
+    {"soft_state_unequal_lists", ballScene(R"(,"soft":{"state":{"positions":[[0,0]],"velocities":[]}})"),
+     "bodies[0].soft.state", "expected one velocity per position (got 1 positions and 0 velocities)"},
+    {"soft_state_empty", ballScene(R"(,"soft":{"state":{"positions":[],"velocities":[]}})"),
+     "bodies[0].soft.state.positions", "a grid has at least one ellipse"},
+    {"soft_state_missing_velocities", ballScene(R"(,"soft":{"state":{"positions":[[0,0]]}})"),
+     "bodies[0].soft.state", "missing required key 'velocities'"},
+    {"soft_state_bad_vector", ballScene(R"(,"soft":{"state":{"positions":[[0,"x"]],"velocities":[[0,0]]}})"),
+     "bodies[0].soft.state.positions[0][1]", "expected a number"},
 
     // springs
     {"spring_not_object", pairScene(R"(["ball"])"), "springs[0]", "expected an object, got \"ball\""},
@@ -445,8 +457,30 @@ TEST(SceneDefaults, SoftKeysDefaultAndAutoSetsAutoDensity)
     EXPECT_EQ(result.world->bodies[0].soft, SoftSettings{});
     SoftSettings automatic;
     automatic.autoDensity = true;
+    automatic.dampingMode = SoftDampingMode::Coefficient;
     automatic.damping = 0;
     EXPECT_EQ(result.world->bodies[1].soft, automatic);
+    // With neither damping key the damping is the default ratio.
+    EXPECT_EQ(result.world->bodies[0].soft->dampingMode, SoftDampingMode::Ratio);
+    EXPECT_EQ(result.world->bodies[0].soft->dampingRatio, constants::kDefaultSoftDampingRatio);
+}
+
+TEST(SceneDefaults, SoftDampingRatioIsReadAsARatio)
+{
+    const SceneLoadResult result = parseScene(scene("[" + ballBody(R"(,"soft":{"dampingRatio":0.3})") + "]"));
+    ASSERT_TRUE(result.ok()) << describeProblems(result.problems);
+    EXPECT_EQ(result.world->bodies[0].soft->dampingMode, SoftDampingMode::Ratio);
+    EXPECT_EQ(result.world->bodies[0].soft->dampingRatio, 0.3);
+}
+
+TEST(SceneDefaults, SoftGridStateIsReadAndAMismatchedOneIsRefused)
+{
+    const SceneLoadResult result = parseScene(
+        scene("[" + ballBody(R"(,"soft":{"state":{"positions":[[0,1],[2,3]],"velocities":[[4,5],[6,7]]}})") + "]"));
+    ASSERT_TRUE(result.ok()) << describeProblems(result.problems);
+    const SoftGridState expected{{Vec2(0, 1), Vec2(2, 3)}, {Vec2(4, 5), Vec2(6, 7)}};
+    EXPECT_EQ(result.world->bodies[0].softState, expected);
+    EXPECT_TRUE(serializeScene(*result.world).find(R"("positions")") != std::string::npos);
 }
 
 TEST(SceneDefaults, PolygonVerticesAreKeptAsGivenAndPositionIsTheCentroid)
@@ -612,14 +646,14 @@ World richWorld()
     egg.shape = Ellipse{0.3, 0.2};
     egg.state.position = Vec2(1.5, 1);
     egg.massSpec = MassSpec{MassMode::Mass, 0.06};
-    egg.soft = SoftSettings{true, 64, 1500, 0.5};
+    egg.soft = SoftSettings{true, 64, 1500, SoftDampingMode::Coefficient, 2, 0.5};
 
     Body crate;
     crate.name = "crate";
     crate.shape = Box{0.8, 0.6};
     crate.state.position = Vec2(3, 0.3);
     crate.state.angle = -0.1;
-    crate.soft = SoftSettings{false, 256, 3000, 2};
+    crate.soft = SoftSettings{false, 256, 3000, SoftDampingMode::Ratio, 0.7, 1};
     crate.material = Material{0.0, 1.2};
 
     Body ramp; // concave, counter-clockwise, not centred on its centroid
@@ -811,6 +845,9 @@ TEST(SceneRoundTrip, SoftAutoAndMassAreWrittenAsGiven)
     EXPECT_NE(text.find(R"("ellipsesPerSquareMeter": 256.0)"), std::string::npos);
     EXPECT_NE(text.find(R"("mass": 0.06)"), std::string::npos);
     EXPECT_NE(text.find(R"("density": 7.85)"), std::string::npos);
+    // The damping as the body has it: a coefficient, or a ratio.
+    EXPECT_NE(text.find(R"("damping": 0.5)"), std::string::npos);
+    EXPECT_NE(text.find(R"("dampingRatio": 0.7)"), std::string::npos);
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -4,6 +4,8 @@
 #include "test_worlds.h"
 #include "view/property_pane.h"
 
+#include "controller/soft/soft_body_builder.h"
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCheckBox>
@@ -24,6 +26,7 @@ using impetus::Vec2;
 using impetus::view::PropertyPane;
 using impetus::view::Selection;
 namespace model = impetus::model;
+namespace controller = impetus::controller;
 namespace test = impetus::view::test;
 
 namespace {
@@ -138,6 +141,7 @@ private slots:
     void pinHingeEditRecomputesBodyAnchors();
     void fixedAndColourAreEditable();
     void softModeToggleAndAuto();
+    void softDampingShowsTheRatioAndItsCoefficient();
     void refreshUpdatesLiveValuesButNotTheFocusedField();
     void refreshAfterTheBodyIsGoneShowsTheWorld();
     void multiSelectionShowsTheFirstBodyWithANote();
@@ -532,6 +536,34 @@ void PropertyPaneTest::fixedAndColourAreEditable()
     QCOMPARE(pane.findChild<QPushButton*>("color")->text(), QString("#123456"));
 }
 
+void PropertyPaneTest::softDampingShowsTheRatioAndItsCoefficient()
+{
+    // A 1 kg, 1 m soft box at the defaults: 64 ellipses of 1/64 kg, ζ = 2, so each grid spring has
+    // c = 2·2·√(2000·(1/64)/2) = 15.811 N·s/m. The pane shows ζ and, beside it, that coefficient.
+    model::World world;
+    model::Body box;
+    box.name = "jelly";
+    box.shape = model::Box{1, 1};
+    box.massSpec = {model::MassMode::Mass, 1};
+    box.soft = model::SoftSettings{};
+    box.updateDerived();
+    world.bodies.push_back(box);
+    controller::prepareSoftBodies(world);
+    PropertyPane pane;
+    QVERIFY(showActive(pane));
+    pane.showSelection(world, bodySelection(0));
+    QCOMPARE(pane.findChild<QLineEdit*>("softDampingRatio")->text(), QString("2"));
+    const double coefficient = pane.findChild<QLineEdit*>("softDamping")->text().toDouble();
+    QVERIFY2(std::abs(coefficient - 4 * std::sqrt(2000.0 / 128)) < 1e-3, qPrintable(QString::number(coefficient)));
+
+    // A body given the coefficient shows the ratio that coefficient amounts to on its grid.
+    world.bodies[0].soft->dampingMode = model::SoftDampingMode::Coefficient;
+    world.bodies[0].soft->damping = std::sqrt(2000.0 / 128); // ζ = 0.5
+    controller::prepareSoftBodies(world);
+    pane.showSelection(world, bodySelection(0));
+    QCOMPARE(pane.findChild<QLineEdit*>("softDampingRatio")->text(), QString("0.5"));
+}
+
 void PropertyPaneTest::softModeToggleAndAuto()
 {
     PropertyPane pane;
@@ -562,17 +594,30 @@ void PropertyPaneTest::softModeToggleAndAuto()
     QCOMPARE(spy.count(), 2);
     typeAndEnter(density, "256");
     typeAndEnter(stiffness, "5000");
+    // The damping is a ratio ζ by default; typing the coefficient makes the body keep that.
+    auto* dampingRatio = pane.findChild<QLineEdit*>("softDampingRatio");
+    QCOMPARE(dampingRatio->text(), QString("2")); // constants::kDefaultSoftDampingRatio
     typeAndEnter(pane.findChild<QLineEdit*>("softDamping"), "2");
     QCOMPARE(spy.count(), 5);
-    const model::SoftSettings expected{false, 256, 5000, 2};
+    model::SoftSettings expected;
+    expected.ellipsesPerSquareMeter = 256;
+    expected.stiffness = 5000;
+    expected.dampingMode = model::SoftDampingMode::Coefficient;
+    expected.damping = 2;
     QVERIFY(spy.at(4).at(1).value<model::Body>().soft == expected);
+    typeAndEnter(dampingRatio, "0.5");
+    QCOMPARE(spy.count(), 6);
+    expected.dampingMode = model::SoftDampingMode::Ratio;
+    expected.dampingRatio = 0.5;
+    QVERIFY(spy.at(5).at(1).value<model::Body>().soft == expected);
+    QCOMPARE(spy.at(5).at(2).toString(), QString("Change soft damping ratio"));
     typeAndEnter(stiffness, "0");
     QCOMPARE(pane.message(), QString("Soft stiffness must be greater than 0 (got 0)."));
 
     QTest::keyClick(soft, Qt::Key_Space);
-    QCOMPARE(spy.count(), 6);
-    QVERIFY(!spy.at(5).at(1).value<model::Body>().soft.has_value());
-    QCOMPARE(spy.at(5).at(2).toString(), QString("Turn off soft mode"));
+    QCOMPARE(spy.count(), 7);
+    QVERIFY(!spy.at(6).at(1).value<model::Body>().soft.has_value());
+    QCOMPARE(spy.at(6).at(2).toString(), QString("Turn off soft mode"));
     QVERIFY(!density->isEnabled());
 }
 
@@ -687,8 +732,8 @@ void PropertyPaneTest::tabReachesEveryField_data()
     QTest::addColumn<int>("fields");
     // Name, shape, vertex table and its two buttons, position ×2, angle, velocity ×2, angular
     // velocity, mass mode, density, mass, inertia, restitution, friction, fixed, colour, soft, the
-    // three soft fields, and the five "Show vectors" boxes.
-    QTest::newRow("soft polygon") << bodySelection(2) << 28;
+    // four soft fields (density, stiffness, damping ratio, damping), and the five "Show vectors" boxes.
+    QTest::newRow("soft polygon") << bodySelection(2) << 29;
     QTest::newRow("world") << Selection{} << 5;
     QTest::newRow("spring") << Selection{{}, {0}, {}} << 9;
     QTest::newRow("rod") << Selection{{}, {}, {0}} << 8;

@@ -37,6 +37,7 @@ model::World softBoxWorld(bool autoDensity = false)
     model::SoftSettings soft;
     soft.ellipsesPerSquareMeter = 64;
     soft.stiffness = 2000;
+    soft.dampingMode = model::SoftDampingMode::Coefficient;
     soft.damping = 5;
     soft.autoDensity = autoDensity;
     jelly.soft = soft;

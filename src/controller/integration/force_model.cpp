@@ -19,7 +19,8 @@ Vec2 velocityOf(const model::BodyState& state, const Vec2& worldPoint)
 using Lanes = Eigen::Array2d;
 
 /// The accelerations of one direction's grid springs on their `a` ends, into fx and fy at each
-/// spring's slot (the `b` end feels the opposite). Positions and velocities are per lattice slot:
+/// spring's slot (the `b` end feels the opposite): their stiffness alone, since their damping is a
+/// pass of its own (soft_damping.h). Positions are per lattice slot:
 /// slot pad + c holds cell c, and the slots around the lattice hold zeros, so a spring that is not
 /// there (all its values 0) pulls with exactly 0, and so does one whose ends meet (its (dx, dy) is
 /// 0 and its length is held at kSoftMinSpringLength, so no branch is needed). Two springs at a
@@ -30,15 +31,10 @@ void springField(const model::SoftGrid& grid, const model::SoftSpringField& fiel
     const auto end = static_cast<std::size_t>(field.end);
     const Scalar* __restrict xa = in.x.data() + pad;
     const Scalar* __restrict ya = in.y.data() + pad;
-    const Scalar* __restrict vxa = in.vx.data() + pad;
-    const Scalar* __restrict vya = in.vy.data() + pad;
     const auto step = static_cast<std::ptrdiff_t>(field.step);
     const Scalar* __restrict xb = xa + step;
     const Scalar* __restrict yb = ya + step;
-    const Scalar* __restrict vxb = vxa + step;
-    const Scalar* __restrict vyb = vya + step;
     const Scalar* __restrict stiffness = field.stiffness.data();
-    const Scalar* __restrict damping = field.damping.data();
     const Scalar* __restrict rest = field.restLength.data();
     fx += pad;
     fy += pad;
@@ -51,14 +47,10 @@ void springField(const model::SoftGrid& grid, const model::SoftSpringField& fiel
     for (; c + 1 < end; c += 2) {
         const Lanes dx = Lanes::Map(xb + c) - Lanes::Map(xa + c);
         const Lanes dy = Lanes::Map(yb + c) - Lanes::Map(ya + c);
-        const Lanes dvx = Lanes::Map(vxb + c) - Lanes::Map(vxa + c);
-        const Lanes dvy = Lanes::Map(vyb + c) - Lanes::Map(vya + c);
         const Lanes length = (dx * dx + dy * dy).sqrt().max(Lanes::Constant(constants::kSoftMinSpringLength));
-        const Lanes invLength = length.inverse();
-        // T = k·(L − L₀) + c·dL/dt, and the acceleration T/m along (dx, dy)/L.
-        const Lanes tension = Lanes::Map(stiffness + c) * (length - Lanes::Map(rest + c)) +
-                              Lanes::Map(damping + c) * (invLength * (dx * dvx + dy * dvy));
-        const Lanes scale = tension * invMass * invLength;
+        // T = k·(L − L₀), and the acceleration T/m along (dx, dy)/L.
+        const Lanes tension = Lanes::Map(stiffness + c) * (length - Lanes::Map(rest + c));
+        const Lanes scale = tension * invMass / length;
         Lanes::Map(fx + c) = scale * dx;
         Lanes::Map(fy + c) = scale * dy;
     }
@@ -66,17 +58,15 @@ void springField(const model::SoftGrid& grid, const model::SoftSpringField& fiel
         const Scalar dx = xb[c] - xa[c];
         const Scalar dy = yb[c] - ya[c];
         const Scalar length = std::max(std::sqrt(dx * dx + dy * dy), constants::kSoftMinSpringLength);
-        const Scalar invLength = 1 / length;
-        const Scalar tension = stiffness[c] * (length - rest[c]) +
-                               damping[c] * (invLength * (dx * (vxb[c] - vxa[c]) + dy * (vyb[c] - vya[c])));
-        const Scalar scale = tension * invMass * invLength;
+        const Scalar tension = stiffness[c] * (length - rest[c]);
+        const Scalar scale = tension * invMass / length;
         fx[c] = scale * dx;
         fy[c] = scale * dy;
     }
 }
 
 /// The grid springs' accelerations on every cell of the lattice, into scratch.ax and ay (per
-/// cell), from the positions and velocities already in the scratch's slots (see springField). Each
+/// cell), from the positions already in the scratch's slots (see springField). Each
 /// direction's springs are computed whole first; a cell then adds the springs that start there
 /// and subtracts those that end there, so that no spring's result is stored and reloaded at once.
 void addGridSpringForces(const model::SoftGrid& grid, ForceScratch& scratch, std::size_t pad, Scalar invMass)
@@ -122,8 +112,8 @@ void addGridSpringForces(const model::SoftGrid& grid, ForceScratch& scratch, std
     }
 }
 
-/// Gravity, drag, internal damping, shape matching and the grid springs on every ellipse of every
-/// soft grid: writes every field of their entries in `out`, with the accelerations (every ellipse
+/// Gravity, drag, shape matching and the grid springs' stiffness on every ellipse of every soft
+/// grid (their damping, and the internal damping, are a pass of their own, soft_damping.h): writes every field of their entries in `out`, with the accelerations (every ellipse
 /// of a grid has the same mass, so forces are divided by it up front). The grid's coordinates are
 /// copied into `scratch`, one array per component laid out on the lattice, for the springs.
 void addSoftGridForces(const model::World& world, std::span<const model::BodyState> states,
@@ -147,11 +137,9 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         scratch.resize(slots);
         Scalar* __restrict x = scratch.x.data();
         Scalar* __restrict y = scratch.y.data();
-        Scalar* __restrict vx = scratch.vx.data();
-        Scalar* __restrict vy = scratch.vy.data();
         // Zeros around the lattice and in its empty cells; a full lattice (a box) needs them only
         // around it.
-        for (Scalar* v : {x, y, vx, vy}) {
+        for (Scalar* v : {x, y}) {
             if (count == cells) {
                 std::fill_n(v, pad, 0.0);
                 std::fill_n(v + pad + cells, pad, 0.0);
@@ -159,20 +147,15 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
                 std::fill_n(v, slots, 0.0);
             }
         }
-        // The grid's rigid motion (centre of mass, its velocity, and the angular velocity of the
-        // ellipses about it) for the internal damping, which acts on what is left over. Sums of
-        // the even and the odd ellipses apart, so that two additions are under way at a time.
+        // The grid's centre of mass, for shape matching. Sums of the even and the odd ellipses
+        // apart, so that two additions are under way at a time.
         Vec2 centreEven = Vec2::Zero();
         Vec2 centreOdd = Vec2::Zero();
-        Vec2 velocityEven = Vec2::Zero();
-        Vec2 velocityOdd = Vec2::Zero();
         const std::int32_t* __restrict cellOf = grid.ellipseCell.data();
         const auto place = [&](std::size_t i) {
             const std::size_t slot = pad + static_cast<std::size_t>(cellOf[i]);
             x[slot] = s[i].position.x();
             y[slot] = s[i].position.y();
-            vx[slot] = s[i].velocity.x();
-            vy[slot] = s[i].velocity.y();
         };
         std::size_t i = 0;
         for (; i + 1 < count; i += 2) {
@@ -180,26 +163,20 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
             place(i + 1);
             centreEven += s[i].position;
             centreOdd += s[i + 1].position;
-            velocityEven += s[i].velocity;
-            velocityOdd += s[i + 1].velocity;
         }
         if (i < count) {
             place(i);
             centreEven += s[i].position;
-            velocityEven += s[i].velocity;
         }
         const auto n = static_cast<Scalar>(count);
         const Vec2 centre = (centreEven + centreOdd) / n;
-        const Vec2 velocity = (velocityEven + velocityOdd) / n;
-        // Σ p × (v − v_c), Σ |p|², Σ r · p and Σ r × p, with p = x − c and r the rest position,
-        // again even and odd apart.
-        Eigen::Array4d sumsEven = Eigen::Array4d::Zero();
-        Eigen::Array4d sumsOdd = Eigen::Array4d::Zero();
+        // Σ r · p and Σ r × p, with p = x − c and r the rest position, again even and odd apart.
+        Vec2 sumsEven = Vec2::Zero();
+        Vec2 sumsOdd = Vec2::Zero();
         const auto sums = [&](std::size_t k) {
             const Vec2 p = s[k].position - centre;
-            const Vec2 q = s[k].velocity - velocity;
             const Vec2& r = grid.restPositions[k];
-            return Eigen::Array4d(cross(p, q), p.squaredNorm(), r.dot(p), cross(r, p));
+            return Vec2(r.dot(p), cross(r, p));
         };
         for (i = 0; i + 1 < count; i += 2) {
             sumsEven += sums(i);
@@ -207,17 +184,13 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
         }
         if (i < count)
             sumsEven += sums(i);
-        const Eigen::Array4d total = sumsEven + sumsOdd;
-        const Scalar omega = total(1) > 0 ? total(0) / total(1) : 0;
+        const Vec2 total = sumsEven + sumsOdd;
         // Shape matching: each ellipse is pulled towards its goal, where the best-fit rigid motion
         // of the rest lattice puts it (see softShapeMatchingStiffness).
-        const Scalar norm = std::hypot(total(2), total(3));
-        const Scalar c = norm > 0 ? total(2) / norm : 1;
-        const Scalar sn = norm > 0 ? total(3) / norm : 0;
+        const Scalar norm = std::hypot(total.x(), total.y());
+        const Scalar c = norm > 0 ? total.x() / norm : 1;
+        const Scalar sn = norm > 0 ? total.y() / norm : 0;
         const Scalar matching = softShapeMatchingStiffness(grid, body) * invMass;
-        // Shape matching is damped in the same proportion as the grid springs (c/k), so the
-        // body's own damping setting governs how much of a landing it gives back.
-        const Scalar relative = constants::kSoftInternalDampingRate + softShapeMatchingDamping(grid, body) * invMass;
 
         addGridSpringForces(grid, scratch, pad, invMass);
         const Scalar* __restrict ax = scratch.ax.data();
@@ -231,15 +204,13 @@ void addSoftGridForces(const model::World& world, std::span<const model::BodySta
             const Scalar vyi = s[i].velocity.y();
             const Vec2& r = grid.restPositions[i];
             const auto cell = static_cast<std::size_t>(cellOf[i]);
-            // v − v_rigid, with v_rigid = v_c + ω × p; and x − g, with g = c + R·r.
-            const Scalar relativeX = vxi - (velocity.x() - omega * py);
-            const Scalar relativeY = vyi - (velocity.y() + omega * px);
+            // x − g, with g = c + R·r.
             const Scalar offX = px - (c * r.x() - sn * r.y());
             const Scalar offY = py - (sn * r.x() + c * r.y());
             d[i].velocity = s[i].velocity;
             d[i].angularVelocity = 0;
-            d[i].acceleration.x() = gravity.x() - drag * vxi - relative * relativeX - matching * offX + ax[cell];
-            d[i].acceleration.y() = gravity.y() - drag * vyi - relative * relativeY - matching * offY + ay[cell];
+            d[i].acceleration.x() = gravity.x() - drag * vxi - matching * offX + ax[cell];
+            d[i].acceleration.y() = gravity.y() - drag * vyi - matching * offY + ay[cell];
             d[i].angularAcceleration = 0;
         }
         offset += count;
@@ -341,7 +312,7 @@ void ForceScratch::resize(std::size_t slots)
     // Only ever grows, so a run of evaluations allocates on its first one alone.
     if (x.size() >= slots)
         return;
-    for (std::vector<Scalar>* v : {&x, &y, &vx, &vy, &ax, &ay})
+    for (std::vector<Scalar>* v : {&x, &y, &ax, &ay})
         v->resize(slots);
     for (std::size_t f = 0; f < fx.size(); ++f) {
         fx[f].resize(slots);

@@ -22,15 +22,13 @@ struct BodyDerivative {
     Scalar angularAcceleration = 0; ///< ω̇ = τ/I, rad/s²
 };
 
-/// Working arrays of computeDerivatives for one soft grid at a time: its coordinates, one array
+/// Working arrays of computeDerivatives for one soft grid at a time: its positions, one array
 /// per component laid out on the grid's lattice (with empty slots around it), the accelerations of
 /// its springs of each direction, and their sum per cell. A caller that evaluates many times keeps
 /// one, so that an evaluation allocates nothing.
 struct ForceScratch {
     std::vector<Scalar> x; ///< per lattice slot: position x, m
     std::vector<Scalar> y; ///< per lattice slot: position y, m
-    std::vector<Scalar> vx; ///< per lattice slot: velocity x, m/s
-    std::vector<Scalar> vy; ///< per lattice slot: velocity y, m/s
     std::array<std::vector<Scalar>, 4> fx; ///< per direction and slot: a spring's pull along x, m/s²
     std::array<std::vector<Scalar>, 4> fy; ///< per direction and slot: a spring's pull along y, m/s²
     std::vector<Scalar> ax; ///< per cell: the springs' acceleration along x, m/s²
@@ -63,8 +61,10 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 ///    a whole feels the same drag as when rigid;
 ///  - each spring pulls its ends together with tension T = k·(L − L₀) + c·dL/dt along the line
 ///    between the anchors, applying the torque r × F about each centre of mass;
-///  - each soft-grid spring does the same between its two ellipses, and every ellipse feels the
-///    grid's internal damping −β·m·(v − v_rigid) (constants::kSoftInternalDampingRate).
+///  - each soft-grid spring pulls its two ellipses with T = k·(L − L₀), and every ellipse feels
+///    shape matching's pull towards its goal. A grid's damping (its springs' c, shape matching's
+///    and the internal damping) is no force here: it is a pass of its own, dampSoftGrids
+///    (soft/soft_damping.h), which Simulation runs before every substep.
 /// A scene spring attached to a soft body acts on the body's aggregate (centre of mass, best-fit
 /// rotation, see softAggregate); its force and torque are shared out over the ellipses as a rigid
 /// body would feel them (a = F/M + (τ/I) × r), which keeps momentum and angular momentum.

@@ -70,7 +70,7 @@ Scalar largestEigenvalue(Scalar xx, Scalar xy, Scalar yy)
 /// The body's mass, from its grid.
 Scalar massOf(const model::SoftGrid& grid) { return grid.ellipseMass * static_cast<Scalar>(grid.size()); }
 
-/// Fills grid.maxSpringRate and maxDampingRate. The stiffness matrix K of the grid is made of 2×2
+/// Fills grid.maxSpringRate. The stiffness matrix K of the grid is made of 2×2
 /// blocks k·u·uᵀ; by Gershgorin's theorem on blocks, λmax(M⁻¹K) ≤ max over ellipses of
 /// 2·λmax(Σ k·u·uᵀ)/m, which is exact for the fastest mode of a uniform square lattice (8k/m).
 void computeRates(model::SoftGrid& grid)
@@ -79,7 +79,6 @@ void computeRates(model::SoftGrid& grid)
         Scalar xx = 0, xy = 0, yy = 0;
     };
     std::vector<Block> stiffness(grid.size());
-    std::vector<Block> damping(grid.size());
     for (const model::SoftSpring& s : grid.springs) {
         const Vec2 d = grid.restPositions[s.b] - grid.restPositions[s.a];
         const Vec2 u = d / d.norm();
@@ -87,23 +86,15 @@ void computeRates(model::SoftGrid& grid)
             stiffness[end].xx += s.stiffness * u.x() * u.x();
             stiffness[end].xy += s.stiffness * u.x() * u.y();
             stiffness[end].yy += s.stiffness * u.y() * u.y();
-            damping[end].xx += s.damping * u.x() * u.x();
-            damping[end].xy += s.damping * u.x() * u.y();
-            damping[end].yy += s.damping * u.y() * u.y();
         }
     }
     grid.maxSpringRate = 0;
-    grid.maxDampingRate = 0;
     for (std::size_t i = 0; i < grid.size(); ++i) {
         grid.maxSpringRate = std::max(grid.maxSpringRate, 2 * largestEigenvalue(stiffness[i].xx, stiffness[i].xy,
                                                                                  stiffness[i].yy) / grid.ellipseMass);
-        grid.maxDampingRate = std::max(grid.maxDampingRate, 2 * largestEigenvalue(damping[i].xx, damping[i].xy,
-                                                                                   damping[i].yy) / grid.ellipseMass);
     }
-    // The internal damping adds its rate to every ellipse's, shape matching its damping c_s/m and
-    // its stiffness k_s/m.
-    grid.maxDampingRate += constants::kSoftInternalDampingRate +
-                           constants::kSoftShapeMatching * grid.settings.damping / massOf(grid);
+    // Shape matching adds its stiffness k_s/m. (The damping does not count: it is a pass of its
+    // own, stable at any step, soft_damping.h.)
     grid.maxSpringRate += constants::kSoftShapeMatching * grid.settings.stiffness / massOf(grid);
 }
 
@@ -118,7 +109,6 @@ void buildSpringFields(model::SoftGrid& grid)
         model::SoftSpringField& field = grid.springFields[f];
         field.step = kSpringDirections[f][0] + kSpringDirections[f][1] * grid.columns;
         field.stiffness.assign(cells, 0);
-        field.damping.assign(cells, 0);
         field.restLength.assign(cells, 0);
         field.begin = static_cast<std::int32_t>(cells);
         field.end = 0;
@@ -132,13 +122,26 @@ void buildSpringFields(model::SoftGrid& grid)
         model::SoftSpringField& field = grid.springFields[f];
         const auto cell = static_cast<std::size_t>(a);
         field.stiffness[cell] = s.stiffness;
-        field.damping[cell] = s.damping;
         field.restLength[cell] = s.restLength;
         field.begin = std::min(field.begin, a);
         field.end = std::max(field.end, a + 1);
     }
     for (model::SoftSpringField& field : grid.springFields)
         field.begin = std::min(field.begin, field.end);
+}
+
+/// Puts a freshly built grid where `body`'s saved grid state (scene key `soft.state`) says, when
+/// there is one with an ellipse for every ellipse of the grid; the body's own state is then the
+/// aggregate the file was saved with. Otherwise the grid stays the rigid copy it was built as.
+void restoreSoftState(model::SoftGrid& grid, const model::Body& body)
+{
+    if (!body.softState || body.softState->positions.size() != grid.size() ||
+        body.softState->velocities.size() != grid.size())
+        return;
+    grid.positions = body.softState->positions;
+    grid.velocities = body.softState->velocities;
+    grid.ownerState = body.state;
+    grid.rigidCopy = false;
 }
 
 /// Whether `grid` still describes `body` (same shape, mass and soft settings).
@@ -151,9 +154,18 @@ bool matches(const model::SoftGrid& grid, const model::Body& body)
 
 bool isSoftBody(const model::Body& body) { return body.soft.has_value() && !body.fixed; }
 
+Scalar softSpringDamping(const model::SoftSettings& settings, Scalar ellipseMass)
+{
+    if (settings.dampingMode == model::SoftDampingMode::Coefficient)
+        return settings.damping;
+    // Two ellipses of mass m joined by one spring vibrate as one mass m/2 on it.
+    const Scalar reducedMass = 0.5 * ellipseMass;
+    return 2 * settings.dampingRatio * std::sqrt(settings.stiffness * reducedMass);
+}
+
 Scalar softShapeMatchingDamping(const model::SoftGrid& grid, const model::Body& body)
 {
-    return constants::kSoftShapeMatching * grid.settings.damping * grid.ellipseMass * body.invMass;
+    return constants::kSoftShapeMatching * grid.springDamping * grid.ellipseMass * body.invMass;
 }
 
 Scalar softShapeMatchingStiffness(const model::SoftGrid& grid, const model::Body& body)
@@ -210,6 +222,7 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
     for (const Vec2& c : centres)
         grid.restPositions.push_back(c - grid.restCentre);
     grid.ellipseMass = body.mass / static_cast<Scalar>(centres.size());
+    grid.springDamping = softSpringDamping(*body.soft, grid.ellipseMass);
 
     // Right and up neighbours (structural), up-right and up-left (shear): every pair once.
     const model::SoftSettings& soft = *body.soft;
@@ -226,7 +239,7 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
             spring.b = static_cast<std::uint32_t>(j);
             spring.restLength = (centres[static_cast<std::size_t>(j)] - centres[i]).norm();
             spring.stiffness = soft.stiffness;
-            spring.damping = soft.damping;
+            spring.damping = grid.springDamping;
             spring.diagonal = dc != 0 && dr != 0;
             grid.springs.push_back(spring);
         }
@@ -250,6 +263,7 @@ void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state)
         grid.velocities[i] = state.velocity + cross(state.angularVelocity, arm);
     }
     grid.ownerState = state;
+    grid.rigidCopy = true;
 }
 
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
@@ -294,7 +308,7 @@ void prepareSoftBodies(model::World& world)
         const model::Body& body = world.bodies[i];
         if (!isSoftBody(body))
             continue;
-        current = g < world.softBodies.size() && world.softBodies[g].body.index == i &&
+        current = g < world.softBodies.size() && world.softBodies[g].body.index == i && !body.softState &&
                   matches(world.softBodies[g], body) && world.softBodies[g].ownerState == body.state;
         ++g;
     }
@@ -318,6 +332,10 @@ void prepareSoftBodies(model::World& world)
         autoChoice = chooseAutoDensity(world);
 
     std::vector<model::SoftGrid> previous = std::move(world.softBodies);
+    // A body read with a saved grid state gets a grid built afresh for it, whatever it had.
+    std::erase_if(previous, [&](const model::SoftGrid& grid) {
+        return grid.body.index < world.bodies.size() && world.bodies[grid.body.index].softState.has_value();
+    });
     world.softBodies.clear();
     for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
         const model::Body& body = world.bodies[i];
@@ -333,7 +351,11 @@ void prepareSoftBodies(model::World& world)
         }
         const Scalar density = body.soft->autoDensity ? *autoChoice : body.soft->ellipsesPerSquareMeter;
         world.softBodies.push_back(buildSoftGrid(body, model::BodyId{i}, density));
+        restoreSoftState(world.softBodies.back(), body);
     }
+    // A saved grid state applies once, to the grid first built for it.
+    for (model::Body& body : world.bodies)
+        body.softState.reset();
 }
 
 void updateSoftOwners(model::World& world)
@@ -346,6 +368,7 @@ void updateSoftOwners(model::World& world)
         body.state.velocity = a.velocity;
         body.state.angularVelocity = a.angularVelocity;
         grid.ownerState = body.state;
+        grid.rigidCopy = false;
     }
 }
 

@@ -17,6 +17,13 @@ namespace impetus::controller {
 /// force, so a grid would never deform; a fixed soft body is simulated as a rigid one).
 bool isSoftBody(const model::Body& body);
 
+/// The damping c of every grid spring of a soft body whose ellipses have mass `ellipseMass` (kg),
+/// N·s/m. SoftDampingMode::Coefficient: settings.damping. SoftDampingMode::Ratio: c = 2ζ·√(k·m_eff)
+/// with ζ = settings.dampingRatio, k = settings.stiffness and m_eff = m/2, the reduced mass of the
+/// two equal ellipses a spring joins, so that a pair of ellipses joined by one spring, alone, is
+/// damped at ratio ζ (ζ = 1 critical: it returns to rest without overshoot).
+Scalar softSpringDamping(const model::SoftSettings& settings, Scalar ellipseMass);
+
 /// The grid of `body` (World::bodies[id]) at `ellipsesPerSquareMeter` = n (1/m²), placed at the
 /// body's state. The lattice covers the shape's bounding box in the body frame with
 /// round(W·√n) × round(H·√n) cells (at least one each way), so cells are as close to 1/√n square

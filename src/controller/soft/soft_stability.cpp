@@ -11,44 +11,37 @@ namespace impetus::controller {
 
 namespace {
 
-/// The largest substep at which semi-implicit Euler is stable on the grid, s: the positive root
-/// of ω²x² + 2γx − L = 0.
-Scalar semiImplicitEulerStep(Scalar omegaSq, Scalar gamma)
-{
-    const Scalar limit = constants::kSemiImplicitEulerSoftStabilityLimit;
-    if (omegaSq > 0)
-        return (-gamma + std::sqrt(gamma * gamma + limit * omegaSq)) / omegaSq;
-    return gamma > 0 ? limit / (2 * gamma) : std::numeric_limits<Scalar>::infinity();
-}
-
-/// The largest stable substep of a grid under the integrator alone, s; 0 when no substep is
-/// stable (explicit Euler, no damping).
+/// The largest substep at which the integrator, with the damping pass before it (soft_damping.h),
+/// is stable on the grid, s; 0 when no substep is stable (explicit Euler, no spring damping). The
+/// pass takes the damping out of the integrator, so only the stiffness ω² = maxSpringRate counts:
+///  - RK4, then the pass, is stable on a mode while ω·h ≤ 2.83 whatever share of its velocity the
+///    pass keeps (2.83 undamped, 3.46 when the pass stops it);
+///  - semi-implicit Euler while ω²h² ≤ 2·(1 + e), e the share of the mode's velocity the pass
+///    keeps: 4 undamped, but only 2 for the fastest modes of a strongly damped grid, whose velocity
+///    the pass all but stops (e → 0). The limit takes e = 0;
+///  - explicit Euler grows an undamped mode by √(1 + ω²h²) a step, so the pass must take out
+///    enough: e·(1 + ω²h²) ≤ 1. The springs' damping (and shape matching's, in the same
+///    proportion) is stiffness-proportional, e = exp(−(c/k)·ω²·h) for a mode of frequency ω, and
+///    that holds for every mode while h ≤ c/k. Its ellipses held by contacts finish as
+///    semi-implicit Euler does (largestStableStep), which bounds it too.
 Scalar integratorStep(const model::SoftGrid& grid, model::IntegratorKind integrator)
 {
     const Scalar omegaSq = grid.maxSpringRate;
-    const Scalar omega = std::sqrt(omegaSq);
-    const Scalar gamma = grid.maxDampingRate;
     const Scalar unlimited = std::numeric_limits<Scalar>::infinity();
+    if (!(omegaSq > 0))
+        return unlimited;
+    const Scalar omega = std::sqrt(omegaSq);
+    const Scalar semiImplicit = std::sqrt(constants::kSemiImplicitEulerSoftStabilityLimit) / omega;
     switch (integrator) {
-    case model::IntegratorKind::Rk4: {
-        const Scalar rate = std::max(omega, gamma);
-        return rate > 0 ? constants::kRk4SoftStabilityLimit / rate : unlimited;
-    }
+    case model::IntegratorKind::Rk4:
+        return constants::kRk4SoftStabilityLimit / omega;
     case model::IntegratorKind::SemiImplicitEuler:
-        return semiImplicitEulerStep(omegaSq, gamma);
+        return semiImplicit;
     case model::IntegratorKind::Euler: {
-        if (omegaSq == 0)
-            return gamma > 0 ? constants::kExplicitEulerSoftSafety * 2 / gamma : unlimited;
-        const Scalar stiffness = grid.settings.stiffness;
-        const Scalar damping = grid.settings.damping;
+        const Scalar damping = grid.springDamping;
         if (!(damping > 0))
             return 0;
-        // Shape matching's pull (rate λ² = k_s/m) is damped only by the internal damping β:
-        // h ≤ 2ζ/ω becomes h ≤ β/λ² there.
-        const Scalar matchingRate =
-            constants::kSoftShapeMatching * stiffness / (grid.ellipseMass * static_cast<Scalar>(grid.size()));
-        return constants::kExplicitEulerSoftSafety *
-               std::min({damping / stiffness, 2 / gamma, constants::kSoftInternalDampingRate / matchingRate});
+        return std::min(constants::kExplicitEulerSoftSafety * damping / grid.settings.stiffness, semiImplicit);
     }
     }
     return unlimited;
@@ -64,14 +57,28 @@ std::string formatted(Scalar value)
 
 /// The largest stable substep of a grid, s. Whatever the integrator, an ellipse held by a contact
 /// force finishes its step as x = x₀ + h·v (as a resting rigid body does) with the velocity the
-/// integrator and the contact gave it; for its springs that is semi-implicit Euler's position
-/// update, stable while ω·h < 2. (Its velocity, damping included, is still the integrator's.)
+/// integrator and the contact gave it. With RK4's velocity that is stable while ω·h < 2.45,
+/// whatever the damping pass keeps; semi-implicit and explicit Euler's velocities make it
+/// semi-implicit Euler, which integratorStep already bounds.
 Scalar largestStableStep(const model::SoftGrid& grid, model::IntegratorKind integrator)
 {
     const Scalar omega = std::sqrt(grid.maxSpringRate);
     const Scalar contactStep =
         omega > 0 ? constants::kSoftContactStabilityLimit / omega : std::numeric_limits<Scalar>::infinity();
     return std::min(integratorStep(grid, integrator), contactStep);
+}
+
+/// The substeps that keep the damping pass accurate at step h (s): 2c·(h/s)/m ≤
+/// kSoftDampingPassLimit for the grid springs' pair rate 2c/m. Not a matter of stability: the
+/// pass is stable at any step, and beyond kMaxSoftSubsteps the grid runs stable, only less
+/// accurately.
+int dampingSubsteps(const model::SoftGrid& grid, Scalar h)
+{
+    if (!(grid.ellipseMass > 0))
+        return 1;
+    const Scalar pairRate = 2 * grid.springDamping / grid.ellipseMass;
+    const Scalar needed = std::ceil(pairRate * h / constants::kSoftDampingPassLimit);
+    return static_cast<int>(std::clamp(needed, 1.0, static_cast<Scalar>(constants::kMaxSoftSubsteps)));
 }
 
 } // namespace
@@ -83,7 +90,7 @@ int requiredSoftSubsteps(const model::SoftGrid& grid, model::IntegratorKind inte
     stable = needed <= constants::kMaxSoftSubsteps;
     if (!stable)
         return constants::kMaxSoftSubsteps;
-    return std::max(1, static_cast<int>(needed));
+    return std::max({1, static_cast<int>(needed), dampingSubsteps(grid, h)});
 }
 
 SoftStability softStability(const model::World& world)
@@ -111,6 +118,19 @@ SoftStability softStability(const model::World& world)
     const std::string method(model::integratorName(integrator));
     std::string text = "soft body '";
     text += name;
+    const model::SoftGrid& grid = *world.softGrid(result.body);
+    if (result.stable && dampingSubsteps(grid, h) == result.substeps) {
+        // The damping, not the stiffness, sets the count.
+        text += "': its springs' damping, 2c·h/m = ";
+        text += formatted(2 * grid.springDamping / grid.ellipseMass * h);
+        text += " at h = ";
+        text += formatted(h * 1000);
+        text += " ms, is too strong for one damping pass; each step is split into ";
+        text += std::to_string(result.substeps);
+        text += " substeps to keep the damping accurate";
+        result.message = text;
+        return result;
+    }
     text += "': its fastest grid vibration has ω·h = ";
     text += formatted(result.omegaH);
     text += " at h = ";
@@ -121,7 +141,7 @@ SoftStability softStability(const model::World& world)
         text += "; each step is split into ";
         text += std::to_string(result.substeps);
         text += " substeps";
-    } else if (integrator == model::IntegratorKind::Euler && !(world.softGrid(result.body)->settings.damping > 0)) {
+    } else if (integrator == model::IntegratorKind::Euler && !(grid.springDamping > 0)) {
         text += ": explicit Euler gains energy on undamped springs at any step. Give the body some damping, "
                 "or use semi-implicit-euler or rk4";
     } else {

@@ -25,16 +25,15 @@ struct SoftStability {
     std::string message;
 };
 
-/// The substeps one grid needs under `integrator` at step h (s):
-///  - RK4: |λ|·h/s ≤ kRk4SoftStabilityLimit with |λ| ≤ max(ω, γ);
-///  - semi-implicit Euler: ω²(h/s)² + 2γ·(h/s) ≤ kSemiImplicitEulerSoftStabilityLimit;
-///  - explicit Euler: h/s ≤ kExplicitEulerSoftSafety·min(c/k, 2/γ, β/λ²) (λ² the shape-matching
-///    rate, β the internal damping rate); with no damping it is
-///    unstable at any step, and gets kMaxSoftSubsteps (stable = false).
+/// The substeps one grid needs under `integrator` at step h (s). The grid's damping is a pass of
+/// its own, stable at any step (soft_damping.h), so only its stiffness counts:
+///  - RK4: ω·(h/s) ≤ kRk4SoftStabilityLimit;
+///  - semi-implicit Euler: ω²(h/s)² ≤ kSemiImplicitEulerSoftStabilityLimit;
+///  - explicit Euler: h/s ≤ kExplicitEulerSoftSafety·c/k and the semi-implicit Euler bound; with
+///    no spring damping it is unstable at any step, and gets kMaxSoftSubsteps (stable = false);
 /// and whatever the integrator, also ω·(h/s) ≤ kSoftContactStabilityLimit: an ellipse held by a
-/// contact force finishes its step as x = x₀ + h·v, semi-implicit Euler's position update.
-/// ω² = grid.maxSpringRate, γ = grid.maxDampingRate. Returns at most kMaxSoftSubsteps; `stable`
-/// tells whether that was enough.
+/// contact force finishes its step as x = x₀ + h·v. ω² = grid.maxSpringRate. Returns at most
+/// kMaxSoftSubsteps; `stable` tells whether that was enough.
 int requiredSoftSubsteps(const model::SoftGrid& grid, model::IntegratorKind integrator, Scalar h, bool& stable);
 
 /// The substeps `world` needs (the most any of its grids needs) and the message to show.
