@@ -1,0 +1,108 @@
+/// \file cli_run_fuzzer.cpp
+/// libFuzzer target for `impetus-cli run` (scripts/fuzz, docs/testing.md): the input is a scene
+/// file, and the CLI's own code (app::runCli, in process) loads it and steps it for a few steps with
+/// a summary and a CSV, as a lab script would. Whatever the scene, the run must end with one of
+/// the documented exit codes, and a successful run must write a summary that is JSON with no null
+/// in it (the contract: a non-finite result is exit 1, never a null in the summary).
+
+#include "app/cli.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Steps each input is run for: enough for contacts, springs, joints and soft grids to be built,
+/// solved and summed, few enough that one execution stays well under a millisecond for a small
+/// scene, so that a million executions fit in a fuzzing session.
+constexpr const char* kFuzzSteps = "12";
+
+/// Every few steps a CSV row per body, so that the CSV writer runs on every input too.
+constexpr const char* kFuzzSampleEvery = "4";
+
+/// A folder of this process's own, for the scene file and the CSV (the CLI reads a path, and
+/// checks that its outputs are not the scene).
+struct ScratchFiles {
+    fs::path folder;
+    fs::path scene;
+    fs::path csv;
+
+    ScratchFiles()
+    {
+        folder = fs::temp_directory_path() / ("impetus-cli-fuzz-" + std::to_string(getpid()));
+        fs::create_directories(folder);
+        scene = folder / "scene.json";
+        csv = folder / "out.csv";
+    }
+    ~ScratchFiles()
+    {
+        std::error_code ignored;
+        fs::remove_all(folder, ignored);
+    }
+    ScratchFiles(const ScratchFiles&) = delete;
+    ScratchFiles& operator=(const ScratchFiles&) = delete;
+};
+
+[[noreturn]] void fail(const std::string& what)
+{
+    std::fprintf(stderr, "cli_run_fuzzer: %s\n", what.c_str());
+    std::abort();
+}
+
+/// True when `value` holds a null anywhere.
+bool holdsNull(const nlohmann::json& value)
+{
+    if (value.is_null())
+        return true;
+    if (value.is_structured()) {
+        for (const nlohmann::json& item : value)
+            if (holdsNull(item))
+                return true;
+    }
+    return false;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    static ScratchFiles files;
+    {
+        std::ofstream scene(files.scene, std::ios::binary | std::ios::trunc);
+        scene.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!scene)
+            fail("cannot write the scratch scene file " + files.scene.string());
+    }
+    const std::vector<std::string> args = {"run",        files.scene.string(), "--steps", kFuzzSteps,
+                                           "--summary",  "-",                  "--csv",   files.csv.string(),
+                                           "--sample-every", kFuzzSampleEvery};
+    std::ostringstream out;
+    std::ostringstream err;
+    const int code = impetus::app::runCli(args, out, err, false);
+    if (code != impetus::app::kExitOk && code != impetus::app::kExitRuntimeFailure &&
+        code != impetus::app::kExitBadInput)
+        fail("undocumented exit code " + std::to_string(code));
+    if (code != impetus::app::kExitOk && err.str().empty())
+        fail("a failed run must say why on stderr");
+    if (code == impetus::app::kExitOk) {
+        const nlohmann::json summary = nlohmann::json::parse(out.str(), nullptr, false);
+        if (summary.is_discarded())
+            fail("the summary is not JSON:\n" + out.str());
+        if (holdsNull(summary))
+            fail("the summary holds a null:\n" + out.str());
+    }
+    return 0;
+}
