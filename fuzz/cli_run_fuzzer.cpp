@@ -6,6 +6,8 @@
 /// in it (the contract: a non-finite result is exit 1, never a null in the summary).
 
 #include "app/cli.h"
+#include "model/constants.h"
+#include "model/scene_io.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <unistd.h>
@@ -32,6 +35,26 @@ constexpr const char* kFuzzSteps = "12";
 
 /// Every few steps a CSV row per body, so that the CSV writer runs on every input too.
 constexpr const char* kFuzzSampleEvery = "4";
+
+/// The most soft-grid ellipses a scene may have to be run, about (its bounding square's area times
+/// the grid density). Legal scenes can be as heavy as the user likes; the fuzzer runs tiny ones,
+/// so that every execution is fast and a slow input means a hang, not a big scene.
+constexpr double kMaxFuzzEllipses = 4096;
+
+/// True when a scene that loads is small enough to be run here (see kMaxFuzzEllipses).
+bool tiny(const impetus::model::World& world)
+{
+    double ellipses = 0;
+    for (const impetus::model::Body& body : world.bodies) {
+        if (!body.soft || body.fixed)
+            continue;
+        const double side = 2 * body.geometry.boundingRadius;
+        const double density = body.soft->autoDensity ? impetus::constants::kSoftAutoDensities[0]
+                                                      : body.soft->ellipsesPerSquareMeter;
+        ellipses += side * side * density;
+    }
+    return ellipses <= kMaxFuzzEllipses;
+}
 
 /// A folder of this process's own, for the scene file and the CSV (the CLI reads a path, and
 /// checks that its outputs are not the scene).
@@ -79,6 +102,13 @@ bool holdsNull(const nlohmann::json& value)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
+    // A scene too big to run fast is left out; one that does not load still goes to the CLI,
+    // whose refusal is part of what is tested.
+    const impetus::model::SceneLoadResult loaded =
+        impetus::model::parseScene(std::string_view(reinterpret_cast<const char*>(data), size));
+    if (loaded.ok() && !tiny(*loaded.world))
+        return 0;
+
     static ScratchFiles files;
     {
         std::ofstream scene(files.scene, std::ios::binary | std::ios::trunc);

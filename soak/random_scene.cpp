@@ -1,5 +1,7 @@
 #include "soak/random_scene.h"
 
+#include "controller/soft/soft_body_builder.h"
+#include "controller/soft/soft_stability.h"
 #include "model/scene_io.h"
 #include "model/scene_warnings.h"
 #include "soak/soak_constants.h"
@@ -40,6 +42,10 @@ constexpr int kMaxStarPoints = 6;
 /// Smallest angle between two neighbouring vertices of a convex polygon, rad: keeps vertices
 /// apart (a sliver is legal, but the loader's job to judge, and the fuzzer's to test).
 constexpr Scalar kMinVertexGap = 0.3;
+/// A soft grid too stiff for its integrator has its stiffness divided by kSofteningFactor, at
+/// most kMaxSoftening times (a factor of a million), before it is made rigid.
+constexpr Scalar kSofteningFactor = 4;
+constexpr int kMaxSoftening = 10;
 /// An ellipse's or box's aspect ratio, at most.
 constexpr Scalar kMaxAspect = 4.0;
 /// Anchors lie within this fraction of the body's bounding radius from its centre.
@@ -262,6 +268,26 @@ void addJoints(SceneRandom& random, World& world, const std::vector<BodyId>& dyn
     }
 }
 
+/// Softens a soft body whose grid is too stiff for its integrator even at kMaxSoftSubsteps
+/// substeps, until it is not, or makes it rigid when no stiffness is soft enough (explicit Euler
+/// on an undamped grid). Such a grid is legal, but the program says it will blow up
+/// (controller::softStability's message): that outcome is expected, not a finding.
+void keepSoftBodiesStable(World& world)
+{
+    for (int attempt = 0;; ++attempt) {
+        World trial = world;
+        controller::prepareSoftBodies(trial);
+        const controller::SoftStability stability = controller::softStability(trial);
+        if (stability.stable)
+            return;
+        Body& body = world.body(stability.body);
+        if (attempt < kMaxSoftening)
+            body.soft->stiffness /= kSofteningFactor;
+        else
+            body.soft.reset();
+    }
+}
+
 } // namespace
 
 Scalar SceneRandom::unit()
@@ -361,6 +387,7 @@ World makeRandomScene(std::uint64_t seed, const RandomSceneOptions& options)
     if (const auto warnings = model::sceneWarnings(*loaded.world); !warnings.empty())
         throw std::logic_error("seed " + std::to_string(seed) + ": the generated scene is outside the tested ranges: " +
                                warnings.front().toString());
+    keepSoftBodiesStable(*loaded.world);
     return std::move(*loaded.world);
 }
 

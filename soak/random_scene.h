@@ -44,9 +44,10 @@ private:
 void addClosedBox(model::World& world);
 
 /// A random scene from `seed`: the closed box, then minBodies to maxBodies dynamic bodies, one to
-/// a cell of the box, and maybe springs, joints, a soft body and a fixed obstacle. Every body has
-/// its derived data; springs and joints have their load-time lengths and anchors as the loader
-/// would give them (run it through serializeScene and parseScene to be sure).
+/// a cell of the box, and maybe springs, joints, a soft body (softened until its integrator can step
+/// its grid) and a fixed obstacle. The scene is saved and read back through the scene loader, as a
+/// file would be, so it has everything the loader derives; it must load with no range warning.
+/// Throws std::logic_error when it does not (a bug of the generator or of the loader).
 model::World makeRandomScene(std::uint64_t seed, const RandomSceneOptions& options);
 
 } // namespace impetus::soak

@@ -14,8 +14,11 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,12 +29,13 @@ using namespace impetus;
 
 constexpr std::string_view kUsage =
     "usage: impetus-soak [--scenes N] [--first-seed N | --seed N] [--time SECONDS]\n"
-    "                    [--min-bodies N] [--max-bodies N] [--out FOLDER] [--verbose]\n"
+    "                    [--min-bodies N] [--max-bodies N] [--out FOLDER] [--known FILE] [--verbose]\n"
     "--scenes N      how many scenes, seeds first-seed, first-seed + 1, ... (default 200)\n"
     "--seed N        replays the one scene of seed N (--scenes 1 --first-seed N)\n"
     "--time SECONDS  simulated time per scene (default 10)\n"
     "--out FOLDER    where a scene with a finding is written, as soak-seed-N.json (default .)\n"
-    "exit codes: 0 every scene passed, 1 a scene had a finding, 2 bad usage\n";
+    "--known FILE    seeds of open findings, one a line ('#' starts a comment): reported, not failed\n"
+    "exit codes: 0 no new finding, 1 a scene had a finding not in --known, 2 bad usage\n";
 
 struct Options {
     std::uint64_t scenes = 200;
@@ -39,6 +43,7 @@ struct Options {
     Scalar time = soak::kSoakTime;
     soak::RandomSceneOptions scene;
     std::filesystem::path out = ".";
+    std::optional<std::filesystem::path> known;
     bool verbose = false;
 };
 
@@ -83,6 +88,8 @@ Options parseOptions(const std::vector<std::string>& args)
             options.scene.maxBodies = parse<int>(flag, value);
         } else if (flag == "--out") {
             options.out = value;
+        } else if (flag == "--known") {
+            options.known = value;
         } else {
             throw UsageError{"unknown argument '" + flag + "'"};
         }
@@ -94,19 +101,41 @@ Options parseOptions(const std::vector<std::string>& args)
     return options;
 }
 
+/// The seeds listed in `path`: one number a line, '#' to the end of a line is a comment.
+std::set<std::uint64_t> readKnownSeeds(const std::filesystem::path& path)
+{
+    std::ifstream file(path);
+    if (!file)
+        throw UsageError{"--known: cannot read '" + path.string() + "'"};
+    std::set<std::uint64_t> seeds;
+    std::string line;
+    while (std::getline(file, line)) {
+        line = line.substr(0, line.find('#'));
+        std::istringstream words(line);
+        std::string word;
+        if (words >> word)
+            seeds.insert(parse<std::uint64_t>("--known", word));
+    }
+    return seeds;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     Options options;
+    std::set<std::uint64_t> known;
     try {
         options = parseOptions(std::vector<std::string>(argv + 1, argv + argc));
+        if (options.known)
+            known = readKnownSeeds(*options.known);
     } catch (const UsageError& e) {
         std::cerr << "impetus-soak: " << e.message << "\n\n" << kUsage;
         return 2;
     }
 
     std::uint64_t findings = 0;
+    std::uint64_t knownFindings = 0;
     Scalar largestGrowth = 0;
     std::uint64_t largestGrowthSeed = 0;
     for (std::uint64_t seed = options.firstSeed; seed < options.firstSeed + options.scenes; ++seed) {
@@ -126,17 +155,23 @@ int main(int argc, char** argv)
             std::cout << "seed " << seed << ": " << world.bodies.size() << " bodies, " << result.steps
                       << " steps, energy growth " << result.largestEnergyGrowth
                       << (result.finding ? ", FINDING" : "") << std::endl;
-        if (!result.finding)
+        const bool isKnown = known.contains(seed);
+        if (!result.finding) {
+            if (isKnown)
+                std::cout << "seed " << seed << ": a known finding that no longer happens; take it off "
+                          << options.known->string() << " and enable its regression test" << std::endl;
             continue;
-        ++findings;
+        }
+        ++(isKnown ? knownFindings : findings);
         const std::filesystem::path file = options.out / ("soak-seed-" + std::to_string(seed) + ".json");
         const std::optional<std::string> error = model::saveSceneFile(file, world);
-        std::cout << "seed " << seed << ": " << result.finding->check << " at t = " << result.finding->time
+        std::cout << "seed " << seed << (isKnown ? " (known)" : "") << ": " << result.finding->check << " at t = " << result.finding->time
                   << " s: " << result.finding->detail << "; scene "
                   << (error ? "not written: " + *error : "written to " + file.string()) << std::endl;
     }
     std::cout << "impetus-soak: " << options.scenes << " scenes from seed " << options.firstSeed << ", "
-              << options.time << " s each: " << findings << " with a finding; largest energy growth "
+              << options.time << " s each: " << findings << " with a new finding, " << knownFindings
+              << " with a known one; largest energy growth "
               << largestGrowth << " of the energy above the box's floor (seed " << largestGrowthSeed
               << "; bound " << soak::kEnergyGrowthBound << ")" << std::endl;
     return findings == 0 ? 0 : 1;
