@@ -6,6 +6,8 @@
 /// in it (the contract: a non-finite result is exit 1, never a null in the summary).
 
 #include "app/cli.h"
+#include "controller/soft/soft_body_builder.h"
+#include "controller/soft/soft_stability.h"
 #include "model/constants.h"
 #include "model/scene_io.h"
 
@@ -41,7 +43,13 @@ constexpr const char* kFuzzSampleEvery = "4";
 /// so that every execution is fast and a slow input means a hang, not a big scene.
 constexpr double kMaxFuzzEllipses = 4096;
 
-/// True when a scene that loads is small enough to be run here (see kMaxFuzzEllipses).
+/// The most ellipse-substeps a step may cost: ellipses times the substeps their stiffness needs
+/// (controller::softStability). A stiff soft box of the examples needs 64 substeps and took 15 s
+/// for 12 steps under the sanitizers on a loaded machine: a slow scene, not a hang.
+constexpr double kMaxFuzzEllipseSubsteps = 16384;
+
+/// True when a scene that loads is small enough to be run here (kMaxFuzzEllipses,
+/// kMaxFuzzEllipseSubsteps).
 bool tiny(const impetus::model::World& world)
 {
     double ellipses = 0;
@@ -53,7 +61,17 @@ bool tiny(const impetus::model::World& world)
                                                       : body.soft->ellipsesPerSquareMeter;
         ellipses += side * side * density;
     }
-    return ellipses <= kMaxFuzzEllipses;
+    if (ellipses > kMaxFuzzEllipses)
+        return false;
+    if (ellipses == 0)
+        return true;
+    impetus::model::World grids = world;
+    impetus::controller::prepareSoftBodies(grids);
+    std::size_t built = 0;
+    for (const impetus::model::SoftGrid& grid : grids.softBodies)
+        built += grid.size();
+    const int substeps = impetus::controller::softStability(grids).substeps;
+    return static_cast<double>(built) * substeps <= kMaxFuzzEllipseSubsteps;
 }
 
 /// A folder of this process's own, for the scene file and the CSV (the CLI reads a path, and
