@@ -65,7 +65,14 @@ bool tiny(const impetus::model::World& world)
         return false;
     if (ellipses == 0)
         return true;
+    // "auto" as the run resolves it: --auto-density below gives the lowest density.
     impetus::model::World grids = world;
+    for (impetus::model::Body& body : grids.bodies) {
+        if (body.soft && body.soft->autoDensity) {
+            body.soft->autoDensity = false;
+            body.soft->ellipsesPerSquareMeter = impetus::constants::kSoftAutoDensities[0];
+        }
+    }
     impetus::controller::prepareSoftBodies(grids);
     std::size_t built = 0;
     for (const impetus::model::SoftGrid& grid : grids.softBodies)
@@ -73,6 +80,10 @@ bool tiny(const impetus::model::World& world)
     const int substeps = impetus::controller::softStability(grids).substeps;
     return static_cast<double>(built) * substeps <= kMaxFuzzEllipseSubsteps;
 }
+
+/// The density "auto" soft bodies run at, per m²: the lowest automatic one, so that a scene's cost
+/// does not depend on the cost model's choice (up to 16,384 ellipses, kSoftAutoHeadlessBudget).
+constexpr const char* kFuzzAutoDensity = "64";
 
 /// A folder of this process's own, for the scene file and the CSV (the CLI reads a path, and
 /// checks that its outputs are not the scene).
@@ -136,7 +147,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const std::vector<std::string> args = {"run",        files.scene.string(), "--steps", kFuzzSteps,
                                            "--summary",  "-",                  "--csv",   files.csv.string(),
-                                           "--sample-every", kFuzzSampleEvery};
+                                           "--sample-every", kFuzzSampleEvery,  "--auto-density", kFuzzAutoDensity};
     std::ostringstream out;
     std::ostringstream err;
     const int code = impetus::app::runCli(args, out, err, false);
