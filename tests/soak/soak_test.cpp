@@ -105,12 +105,12 @@ TEST(SoakRun, ANonFiniteStateIsFound)
 }
 
 // The floor is each body's mass times its potential at the box corner lowest in the field:
-// for g = (3, −4) m/s² that is the corner (−5, 0), where −g·x = 15 J/kg.
+// for g = (3, −4) m/s² that is the corner (5, 0), where −g·x = −(3·5 − 4·0) = −15 J/kg.
 TEST(SoakRun, TheEnergyFloorIsAtTheLowestCorner)
 {
     model::World world = boxWithBall(Vec2(0, 5), Vec2::Zero());
     world.settings.gravity = Vec2(3, -4);
-    EXPECT_NEAR(energyFloor(world), world.bodies.back().mass * 15.0, 1e-12);
+    EXPECT_NEAR(energyFloor(world), world.bodies.back().mass * -15.0, 1e-12);
     world.settings.gravity = Vec2(0, -9.81);
     EXPECT_DOUBLE_EQ(energyFloor(world), 0.0);
 }
