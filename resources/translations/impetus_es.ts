@@ -110,6 +110,42 @@
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
+    <message>
+        <source>%1 (fixed)</source>
+        <translation>%1 (fijo)</translation>
+    </message>
+    <message>
+        <source>x = %1 m, y = %2 m</source>
+        <translation>x = %1 m, y = %2 m</translation>
+    </message>
+    <message>
+        <source>vx = %1 m/s, vy = %2 m/s</source>
+        <translation>vx = %1 m/s, vy = %2 m/s</translation>
+    </message>
+    <message>
+        <source>speed = %1 m/s</source>
+        <translation>rapidez = %1 m/s</translation>
+    </message>
+    <message>
+        <source>angle = %1 rad (%2°), ω = %3 rad/s</source>
+        <translation>ángulo = %1 rad (%2°), ω = %3 rad/s</translation>
+    </message>
+    <message>
+        <source>p = (%1, %2) kg·m/s</source>
+        <translation>p = (%1, %2) kg·m/s</translation>
+    </message>
+    <message>
+        <source>K = %1 J, U = %2 J, K + U = %3 J</source>
+        <translation>K = %1 J, U = %2 J, K + U = %3 J</translation>
+    </message>
+    <message>
+        <source>collisions: %1, touching now</source>
+        <translation>colisiones: %1, en contacto ahora</translation>
+    </message>
+    <message>
+        <source>collisions: %1</source>
+        <translation>colisiones: %1</translation>
+    </message>
 </context>
 <context>
     <name>impetus::app::App</name>
@@ -1383,6 +1419,14 @@
         <source>Step back once</source>
         <translation>Retroceder un paso</translation>
     </message>
+    <message>
+        <source>Probe</source>
+        <translation>Sonda</translation>
+    </message>
+    <message>
+        <source>Click a body to read its position, velocity, energies and collisions as it moves</source>
+        <translation>Haz clic en un cuerpo para leer su posición, velocidad, energías y colisiones mientras se mueve</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>
@@ -2058,6 +2102,38 @@
     <message>
         <source>Lock note</source>
         <translation>Nota de bloqueo</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Avisos</translation>
+    </message>
+    <message>
+        <source>Show vectors</source>
+        <translation>Mostrar vectores</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Aceleración</translation>
+    </message>
+    <message>
+        <source>Net force</source>
+        <translation>Fuerza neta</translation>
+    </message>
+    <message>
+        <source>Force parts</source>
+        <translation>Fuerzas por separado</translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation>Momento lineal</translation>
+    </message>
+    <message>
+        <source>Show %1 arrows of this body</source>
+        <translation>Mostrar las flechas de %1 de este cuerpo</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Aviso: %1</translation>
     </message>
 </context>
 <context>

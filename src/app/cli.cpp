@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include "controller/diagnostics.h"
+#include "controller/energy_ledger.h"
 #include "controller/simulation.h"
 #include "controller/soft/soft_body_builder.h"
 #include "controller/soft/soft_comparison.h"
@@ -390,9 +391,37 @@ std::string_view densityChooser(bool automatic, AutoDensityRule rule)
     return "scene";
 }
 
+/// The energy ledger of a run (docs/physics.md, "The energy ledger"): the energies at its start and
+/// end, and what each cause took out, J. A run of no steps has nothing booked: both energies
+/// are the world's.
+nlohmann::ordered_json ledgerJson(const model::World& world, const controller::EnergyLedger& ledger)
+{
+    const auto energyJson = [](const controller::Energy& e) {
+        return nlohmann::ordered_json{
+            {"kinetic", e.kinetic}, {"potential", e.potential}, {"elastic", e.elastic}, {"total", e.total()}};
+    };
+    const controller::EnergyLosses& l = ledger.losses();
+    nlohmann::ordered_json json;
+    const controller::Energy now = controller::computeEnergy(world);
+    json["initial"] = energyJson(ledger.started() ? ledger.initialEnergy() : now);
+    json["current"] = energyJson(ledger.started() ? ledger.currentEnergy() : now);
+    json["losses"] = {{"impacts", l.impacts},
+                      {"friction", l.friction},
+                      {"drag", l.drag},
+                      {"springDamping", l.springDamping},
+                      {"softDamping", l.softDamping},
+                      {"joints", l.joints},
+                      {"correction", l.correction},
+                      {"drift", l.drift},
+                      {"total", l.total()}};
+    json["closure"] = ledger.closure();
+    return json;
+}
+
 /// The end-of-run summary in the contract's layout and key order.
 nlohmann::ordered_json makeSummary(const model::World& world, double time, std::int64_t steps,
-                                   const std::vector<bool>& automatic, AutoDensityRule rule)
+                                   const std::vector<bool>& automatic, AutoDensityRule rule,
+                                   const controller::EnergyLedger& ledger)
 {
     const controller::Energy energy = controller::computeEnergy(world);
     nlohmann::ordered_json summary;
@@ -426,6 +455,7 @@ nlohmann::ordered_json makeSummary(const model::World& world, double time, std::
         bodies.push_back(std::move(b));
     }
     summary["bodies"] = std::move(bodies);
+    summary["energyLedger"] = ledgerJson(world, ledger); // an addition to the contract (docs/cli.md)
     return summary;
 }
 
@@ -772,6 +802,10 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         return kExitRuntimeFailure;
 
     controller::Simulation simulation;
+    // The ledger costs a few energy sums a substep: kept only when a summary will show it.
+    controller::EnergyLedger ledger;
+    if (summaryOutput.isOpen())
+        simulation.setLedger(&ledger);
     EnergyWatch energyWatch(world);
     {
         ProgressLine progress(err, errIsTerminal, totalSteps);
@@ -809,7 +843,7 @@ int commandRun(std::span<const std::string> args, std::ostream& out, std::ostrea
         return kExitRuntimeFailure;
     const double simulatedTime = static_cast<double>(totalSteps) * dt;
     const nlohmann::ordered_json summary =
-        makeSummary(world, simulatedTime, totalSteps, automatic, options.autoDensityRule);
+        makeSummary(world, simulatedTime, totalSteps, automatic, options.autoDensityRule, ledger);
     if (summaryOutput.isOpen()) {
         summaryOutput.stream() << summary.dump(2) << '\n';
         summaryOutput.stream().flush();

@@ -10,14 +10,19 @@ namespace impetus::controller {
 
 Energy computeEnergy(const model::World& world)
 {
-    Energy e;
     std::vector<model::BodyState> states;
-    states.reserve(world.bodies.size());
-    for (const model::Body& body : world.bodies) {
-        states.push_back(body.state);
-        if (body.fixed || world.softGrid(model::BodyId{static_cast<std::uint32_t>(states.size() - 1)}))
+    gatherStates(world, states);
+    return computeEnergy(world, states);
+}
+
+Energy computeEnergy(const model::World& world, std::span<const model::BodyState> states)
+{
+    Energy e;
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i) {
+        const model::Body& body = world.bodies[i];
+        if (body.fixed || world.softGrid(model::BodyId{i}))
             continue;
-        const model::BodyState& s = body.state;
+        const model::BodyState& s = states[i];
         e.kinetic += 0.5 * body.mass * s.velocity.squaredNorm() +
                      0.5 * body.inertia * s.angularVelocity * s.angularVelocity;
         e.potential -= body.mass * world.settings.gravity.dot(s.position);
@@ -29,22 +34,32 @@ Energy computeEnergy(const model::World& world)
     }
     // A soft body's energy is its ellipses': their motion (deformation included), their height,
     // and the energy in their springs.
+    std::size_t offset = world.bodies.size();
+    std::vector<Vec2> positions;
+    std::vector<Vec2> velocities;
     for (const model::SoftGrid& grid : world.softBodies) {
+        positions.resize(grid.size());
+        velocities.resize(grid.size());
         for (std::size_t i = 0; i < grid.size(); ++i) {
-            e.kinetic += 0.5 * grid.ellipseMass * grid.velocities[i].squaredNorm();
-            e.potential -= grid.ellipseMass * world.settings.gravity.dot(grid.positions[i]);
+            positions[i] = states[offset + i].position;
+            velocities[i] = states[offset + i].velocity;
+        }
+        offset += grid.size();
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            e.kinetic += 0.5 * grid.ellipseMass * velocities[i].squaredNorm();
+            e.potential -= grid.ellipseMass * world.settings.gravity.dot(positions[i]);
         }
         for (const model::SoftSpring& spring : grid.springs) {
-            const Scalar stretch = (grid.positions[spring.b] - grid.positions[spring.a]).norm() - spring.restLength;
+            const Scalar stretch = (positions[spring.b] - positions[spring.a]).norm() - spring.restLength;
             e.elastic += 0.5 * spring.stiffness * stretch * stretch;
         }
         // Shape matching's springs to the goal positions of the best-fit rigid motion.
         const model::Body& body = world.bodies[grid.body.index];
-        const SoftAggregate a = softAggregate(grid, grid.positions, grid.velocities, body.state.angle);
+        const SoftAggregate a = softAggregate(grid, positions, velocities, states[grid.body.index].angle);
         const Scalar matching = softShapeMatchingStiffness(grid, body);
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const Vec2 goal = a.position + rotate(grid.restPositions[i], a.angle);
-            e.elastic += 0.5 * matching * (grid.positions[i] - goal).squaredNorm();
+            e.elastic += 0.5 * matching * (positions[i] - goal).squaredNorm();
         }
     }
     return e;

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 
 namespace impetus::controller {
 
@@ -29,6 +30,10 @@ struct Energy {
 
 /// The energy of `world` in its current state.
 Energy computeEnergy(const model::World& world);
+
+/// The energy of `world` with its state list (force_model.h, stateCount: bodies, then soft-grid
+/// ellipses) replaced by `states`, J: for the states between the phases of a step.
+Energy computeEnergy(const model::World& world, std::span<const model::BodyState> states);
 
 /// Total linear momentum Σ m·v of the dynamic bodies, kg·m/s.
 Vec2 linearMomentum(const model::World& world);

@@ -1,6 +1,7 @@
 #include "controller/simulation.h"
 
 #include "controller/collision/narrow_phase.h"
+#include "controller/energy_ledger.h"
 #include "controller/soft/soft_body_builder.h"
 
 #include <algorithm>
@@ -55,6 +56,12 @@ Simulation::Simulation(SolverSettings settings)
 {
     m_contactSolver.useTasks(m_tasks.get());
     m_contactSolver.setBatchMinConstraints(settings.batchMinConstraints);
+}
+
+void Simulation::setLedger(EnergyLedger* ledger)
+{
+    m_ledger = ledger;
+    m_contactSolver.measureImpactWork(ledger != nullptr);
 }
 
 Integrator& Simulation::integratorFor(model::IntegratorKind kind)
@@ -327,12 +334,19 @@ void Simulation::finishBodyPosition(std::size_t i, Scalar h)
         return;
     const model::BodyState& start = m_startStates[i];
     if (sb.hadContactForce) {
-        // Until its first impact the body moved with its start velocity, then with its final
-        // one. (Written with the final velocity alone, an impact that a contact force then
-        // cancels would still move the body.)
-        const Scalar tau = sb.hadImpact ? sb.firstImpactTau : 0.0;
-        s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity);
-        s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity);
+        // Each impact changes the velocity at its own time τₖ·h, and the contact forces and
+        // joints after the last one, at T·h (they answer the impacts: written with the final
+        // velocity alone, an impact that a contact force then cancels would still move the body):
+        //   x = x₀ + h·v₀ + h·Σₖ (1 − τₖ)·Δvₖ + h·(1 − T)·Δv_contacts
+        //     = x₀ + h·(T·v₀ + (1 − T)·v) + h·(T·Σₖ Δvₖ − Σₖ τₖ·Δvₖ).
+        // The contact impulses took their lever arms from where the body is at T·h
+        // (SolverBody::impulseOrigin), which keeps the angular momentum (docs/physics.md,
+        // "Conservation"). A body without impacts has T = 0: x = x₀ + h·v.
+        const Scalar tau = sb.hadImpact ? sb.lastImpactTau : 0.0;
+        s.position = start.position + h * (tau * start.velocity + (1 - tau) * sb.velocity) +
+                     h * (tau * sb.impactVelocity - sb.impactLateVelocity);
+        s.angle = start.angle + h * (tau * start.angularVelocity + (1 - tau) * sb.angularVelocity) +
+                  h * (tau * sb.impactAngularVelocity - sb.impactLateAngularVelocity);
     } else if (sb.hadImpact) {
         // s holds the integrator's result; sb.velocity − s.velocity is what the impacts added.
         s.position += h * (sb.velocity - s.velocity - sb.impactLateVelocity);
@@ -434,6 +448,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
                          bool handOver)
 {
     const std::size_t total = stateCount(world);
+    if (m_ledger)
+        m_ledger->beginSubstep(world);
 
     // Phases 0 and 1: the start of the step and its collisions (startAndCollide). A later substep
     // of a step that found its contacts for the whole step only takes the start states afresh.
@@ -452,10 +468,15 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         m_contactSolver.refresh(m_bodies, m_startDerivatives, h);
     else
         m_contactSolver.prepare(world, m_manifolds, m_bodies, m_startDerivatives, h);
-    m_jointSolver.prepare(world, m_bodies);
     m_profile.prepareMs += millisecondsSince(solveStart);
     const Clock::time_point impactsStart = Clock::now();
+    if (m_ledger)
+        m_ledger->beforeImpacts(m_bodies);
     m_profile.impacts += m_contactSolver.solveImpacts(m_bodies, h);
+    // After the impacts: a struck body's joint impulses act from where it is after its last one.
+    m_jointSolver.prepare(world, m_bodies, h);
+    if (m_ledger)
+        m_ledger->afterImpacts(m_bodies, m_contactSolver.impactNormalWork(), m_contactSolver.impactFrictionWork());
     m_profile.contacts += static_cast<int>(m_contactSolver.constraints().size());
     m_profile.impactsMs += millisecondsSince(impactsStart);
     double solveMs = millisecondsSince(solveStart);
@@ -463,6 +484,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     // Phase 3: smooth forces (gravity, springs, drag) integrated over the whole world state.
     const Clock::time_point integrateStart = Clock::now();
     integratorFor(world.settings.integrator).step(world, m_startStates, m_startDerivatives, h, m_endStates);
+    if (m_ledger)
+        m_ledger->afterIntegration(world, m_startStates, m_endStates, h);
     m_profile.integrateMs += millisecondsSince(integrateStart);
 
     // Phase 4: contact forces and joints, on the integrated velocities plus the impacts' change.
@@ -489,6 +512,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         if (softJoints)
             shareJointMotion(world, false);
     };
+    if (m_ledger)
+        m_ledger->beforeVelocities(m_bodies, m_contactSolver.constraints());
     onSoftAggregates([&] { m_jointSolver.warmStart(m_bodies); });
     m_contactSolver.warmStart(m_bodies, h, !m_jointSolver.empty());
     for (int i = 0; i < m_settings.velocityIterations; ++i) {
@@ -496,18 +521,39 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         m_contactSolver.solveVelocities(m_bodies);
     }
     m_contactSolver.finishVelocities(m_bodies);
+    if (m_ledger)
+        m_ledger->afterVelocities(m_bodies, m_contactSolver.constraints(), m_contactSolver.records());
     m_profile.velocityMs += millisecondsSince(velocityStart);
     const Clock::time_point positionStart = Clock::now();
 
     // Phase 5: positions, then position correction (moves bodies, never touches velocities).
     integratePositions(world, h);
+    if (m_ledger)
+        m_ledger->beforeCorrection(world, m_endStates);
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         syncSoftAggregates(world);
+    m_contactSolver.beginPositions();
+    m_jointSolver.beginPositions();
     for (int i = 0; i < m_settings.positionIterations; ++i) {
+        if (m_ledger)
+            m_ledger->beforeJointCorrection(world, m_bodies);
         const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
+        if (m_ledger)
+            m_ledger->afterJointCorrection(world, m_bodies);
         const bool contactsOk = m_contactSolver.solvePositions(m_bodies, i == 0 || !m_jointSolver.empty());
         if (jointsOk && contactsOk)
             break;
+    }
+    // Moving bodies while their velocities stay changes the angular momentum; each pushed pair
+    // takes it back by turning its relative velocity (docs/physics.md, "Conservation"). Only
+    // without gravity, whose torque changes the angular momentum about any fixed point anyway:
+    // turning the relative velocity of two boxes side by side in a settling stack would make them
+    // approach, and a stack under gravity keeps the exact motion it had.
+    if (world.settings.gravity.isZero()) {
+        m_contactSolver.measurePushes(m_bodies);
+        m_jointSolver.measurePushes(m_bodies);
+        m_contactSolver.takeBackPushes(m_bodies);
+        m_jointSolver.takeBackPushes(m_bodies);
     }
     if (!world.softBodies.empty() && !m_jointSolver.empty())
         shareJointMotion(world, true);
@@ -517,11 +563,14 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
                 continue;
             m_endStates[i].position = m_bodies[i].position;
             m_endStates[i].angle = m_bodies[i].angle;
+            m_endStates[i].velocity = m_bodies[i].velocity; // takeBackPushes may turn it
         }
     });
     m_profile.positionMs += millisecondsSince(positionStart);
     scatterStates(world, m_endStates, bodyTasks(world));
     updateSoftOwners(world);
+    if (m_ledger)
+        m_ledger->endSubstep(world);
     solveMs += millisecondsSince(velocityStart);
     m_profile.solveMs += solveMs;
 

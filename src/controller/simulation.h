@@ -18,6 +18,8 @@
 
 namespace impetus::controller {
 
+class EnergyLedger;
+
 /// Wall-clock time spent in each phase of the last step, ms. For benchmarks and profiling only;
 /// nothing physical depends on it.
 struct StepProfile {
@@ -88,8 +90,16 @@ public:
     /// The contacts that began in the last step (the collision log's new entries).
     const std::vector<CollisionEvent>& events() const { return m_events; }
 
+    /// Appends a record of every impact from the next step on to `log` (impact_record.h), or
+    /// stops recording (nullptr, the default). The caller keeps `log` alive.
+    void setImpactLog(std::vector<ImpactRecord>* log) { m_contactSolver.setImpactLog(log); }
+
     /// The substeps of the last step and why (one, with no message, without soft bodies).
     const SoftStability& stability() const { return m_stability; }
+
+    /// Books every substep's energy by cause in `ledger` (energy_ledger.h), or stops booking for
+    /// nullptr (the default, which costs nothing). The caller keeps the ledger alive.
+    void setLedger(EnergyLedger* ledger);
 
 private:
     /// What an entry of the world's state list is, for the solvers.
@@ -169,6 +179,7 @@ private:
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;
     CollisionScratch m_collisionScratch;
+    EnergyLedger* m_ledger = nullptr; ///< see setLedger
 };
 
 } // namespace impetus::controller

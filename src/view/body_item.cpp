@@ -1,5 +1,6 @@
 #include "view/body_item.h"
 
+#include "view/body_stamps.h"
 #include "view/view_constants.h"
 
 #include <QColor>
@@ -44,9 +45,11 @@ BodyItem::BodyItem(model::BodyId id, const model::Body& body, QGraphicsItem* par
     , m_outline(outlinePath(body))
     , m_rigidOutline(m_outline)
 {
-    if (const auto* circle = std::get_if<model::Circle>(&body.shape))
+    if (const auto* circle = std::get_if<model::Circle>(&body.shape)) {
         m_radiusLine = QLineF(0, 0, circle->radius, 0);
-    else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
+        m_rigidCircleRadius = circle->radius;
+        m_circleRadius = m_rigidCircleRadius;
+    } else if (const auto* ellipse = std::get_if<model::Ellipse>(&body.shape))
         m_radiusLine = QLineF(0, 0, ellipse->radiusX, 0);
 
     m_color = toQColor(body.color);
@@ -125,6 +128,8 @@ void BodyItem::setDeformedOutline(const std::vector<Vec2>& outline)
         return;
     prepareGeometryChange();
     m_outline = path;
+    // Deformed, a soft circle is no longer the circle of a stamp.
+    m_circleRadius = m_outline == m_rigidOutline ? m_rigidCircleRadius : 0;
 }
 
 QPainterPath BodyItem::shape() const { return m_outline; }
@@ -135,16 +140,22 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
 {
     // Fill, then the hatch of a fixed body, then the outline on top of both.
     const Look& look = m_colliding ? m_red : m_own;
-    painter->setPen(Qt::NoPen);
-    painter->setBrush(look.fill);
-    painter->drawPath(m_outline);
-    if (look.hatch.style() != Qt::NoBrush) {
-        painter->setBrush(look.hatch);
+    // A hatch lies on the screen's pixel grid, not the body's: no stamp for it.
+    const bool stamped = m_stamps && m_circleRadius > 0 && look.hatch.style() == Qt::NoBrush &&
+                         m_stamps->drawCircle(*painter, m_outline, m_circleRadius, look.fill, look.pen);
+    if (!stamped) {
+        painter->setPen(Qt::NoPen);
+        painter->setBrush(look.fill);
         painter->drawPath(m_outline);
+        if (look.hatch.style() != Qt::NoBrush) {
+            painter->setBrush(look.hatch);
+            painter->drawPath(m_outline);
+        }
     }
     painter->setPen(look.pen);
     painter->setBrush(Qt::NoBrush);
-    painter->drawPath(m_outline);
+    if (!stamped)
+        painter->drawPath(m_outline);
     if (!m_radiusLine.isNull())
         painter->drawLine(m_radiusLine);
     if (m_highlighted) {

@@ -22,6 +22,8 @@ namespace impetus::view {
 /// same width in pixels at every zoom).
 ///
 /// The item keeps a copy of what it draws; setPose() moves it. It never reads the world itself.
+class BodyStamps;
+
 class BodyItem : public QGraphicsItem {
 public:
     /// QGraphicsItem::type() of body items.
@@ -54,6 +56,10 @@ public:
     /// (projector mode).
     void setLook(const CanvasLook& look);
 
+    /// Draws a round body's fill and outline from `stamps` (shared by the canvas's items; nullptr:
+    /// draws them in place), where a stamp can stand in (BodyStamps::drawCircle).
+    void setStamps(BodyStamps* stamps) { m_stamps = stamps; }
+
     /// Whether the selection outline is drawn.
     bool isHighlighted() const { return m_highlighted; }
 
@@ -72,6 +78,9 @@ private:
     QPainterPath m_outline; ///< what is drawn: the rigid outline, or the deformed one
     QPainterPath m_rigidOutline;
     QLineF m_radiusLine; ///< drawn for round shapes; null for polygons
+    double m_rigidCircleRadius = 0; ///< m, for a circle; 0 for other shapes
+    double m_circleRadius = 0; ///< m_rigidCircleRadius while drawn rigid, 0 deformed (no stamp)
+    BodyStamps* m_stamps = nullptr;
     /// The brushes and pen of one colour scheme.
     struct Look {
         QBrush fill;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace impetus::view {
 
@@ -173,14 +174,17 @@ void CanvasInstruments::scaleArrows(double factor)
 void CanvasInstruments::setSelectedOnly(bool on)
 {
     m_selectedOnly = on;
+    invalidateTrailPictures();
     emit changed();
 }
 
 void CanvasInstruments::setSelection(const Selection& selection)
 {
     m_selection = selection;
-    if (m_selectedOnly)
+    if (m_selectedOnly) {
+        invalidateTrailPictures();
         emit changed();
+    }
 }
 
 void CanvasInstruments::setShowTrails(bool on)
@@ -189,6 +193,7 @@ void CanvasInstruments::setShowTrails(bool on)
         return;
     m_trails = on;
     m_trailPoints.clear();
+    invalidateTrailPictures();
     if (on)
         startTrails();
     emit samplingChanged();
@@ -198,6 +203,7 @@ void CanvasInstruments::setShowTrails(bool on)
 void CanvasInstruments::setTrailDotSteps(int steps)
 {
     m_dotSteps = std::max(1, steps);
+    invalidateTrailPictures();
     emit changed();
 }
 
@@ -213,6 +219,14 @@ void CanvasInstruments::startTrails()
     m_trailPoints.assign(world.bodies.size(), {});
     for (std::size_t i = 0; i < world.bodies.size(); ++i)
         m_trailPoints[i].push_back({world.stepCount, toPoint(world.bodies[i].state.position)});
+    invalidateTrailPictures();
+}
+
+void CanvasInstruments::invalidateTrailPictures()
+{
+    ++m_trailRevision;
+    m_trimmedSinceRevision = 0;
+    m_trailCursors.clear();
 }
 
 void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
@@ -224,16 +238,25 @@ void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
     for (const StepSample& sample : samples) {
         if (sample.centres.size() != m_trailPoints.size())
             continue; // recorded before a body came or went: it belongs to another scene
+        bool dropped = false; // some trail lost its oldest point to this step
         for (std::size_t i = 0; i < sample.centres.size(); ++i) {
             std::deque<TrailPoint>& points = m_trailPoints[i];
             // Steps along a run that is already recorded (Step after scrubbing back) add nothing.
             if (!points.empty() && points.back().step >= sample.step)
                 continue;
             points.push_back({sample.step, toPoint(sample.centres[i])});
-            if (points.size() > most)
+            if (points.size() > most) {
                 points.pop_front();
+                dropped = true;
+            }
         }
+        if (dropped)
+            ++m_trimmedSinceRevision;
     }
+    // A picture that still shows the dropped points is repainted whole only now and then
+    // (constants::kTrailTrimRedrawFraction): the trails shown run a little long in between.
+    if (static_cast<double>(m_trimmedSinceRevision) > constants::kTrailTrimRedrawFraction * static_cast<double>(most))
+        invalidateTrailPictures();
 }
 
 void CanvasInstruments::discardAfter(std::int64_t step)
@@ -242,6 +265,7 @@ void CanvasInstruments::discardAfter(std::int64_t step)
         while (!points.empty() && points.back().step > step)
             points.pop_back();
     }
+    invalidateTrailPictures();
     emit changed();
 }
 
@@ -263,6 +287,7 @@ void CanvasInstruments::clear()
 {
     m_bodyShown.clear();
     m_trailPoints.clear();
+    invalidateTrailPictures();
     if (m_trails)
         startTrails();
     m_selection = {};
@@ -274,55 +299,97 @@ bool CanvasInstruments::drawsBody(std::size_t i) const
     return !m_selectedOnly || std::ranges::find(m_selection.bodies, static_cast<int>(i)) != m_selection.bodies.end();
 }
 
-void CanvasInstruments::paintTrails(QPainter& painter) const
+void CanvasInstruments::paintTrails(QPainter& painter)
+{
+    m_trailCursors.assign(m_trailPoints.size(), TrailCursor{});
+    paintTrailGrowth(painter);
+}
+
+void CanvasInstruments::paintTrailGrowth(QPainter& painter)
 {
     if (!m_trails)
         return;
+    if (m_trailCursors.size() != m_trailPoints.size())
+        m_trailCursors.assign(m_trailPoints.size(), TrailCursor{});
     const model::World& world = m_runner.world();
     const QTransform toPixels = painter.worldTransform();
     painter.save();
     painter.resetTransform();
     painter.setRenderHint(QPainter::Antialiasing);
-    const std::int64_t shown = world.stepCount;
     for (std::size_t i = 0; i < m_trailPoints.size() && i < world.bodies.size(); ++i) {
         if (world.bodies[i].fixed || !drawsBody(i))
             continue;
-        const model::Color c = world.bodies[i].color;
-        const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
-        QPolygonF line;
-        std::vector<QPointF> dots;
-        QPointF skipped; // the last point left out of the line, px
-        bool pending = false;
-        for (const TrailPoint& point : m_trailPoints[i]) {
-            if (point.step > shown)
-                break; // scrubbed back: the trail ends where the body is
-            const QPointF px = toPixels.map(point.position);
-            // A point within a pixel of the last one drawn adds nothing to see and costs a joint
-            // to stroke: a body at rest would pile up thousands in one place.
-            if (!line.isEmpty() && squaredDistance(line.back(), px) < kTrailMinSegmentPx * kTrailMinSegmentPx) {
-                skipped = px;
-                pending = true;
-            } else {
-                line << px;
-                pending = false;
-            }
-            // A dot that would overlap the last one drawn adds nothing: a body at rest would
-            // stack a dot every 0.1 s on one spot.
-            if (point.step % m_dotSteps == 0 &&
-                (dots.empty() || squaredDistance(dots.back(), px) >= 4 * constants::kTrailDotRadiusPx * constants::kTrailDotRadiusPx))
-                dots.push_back(px);
+        drawTrail(painter, toPixels, i, m_trailCursors[i]);
+    }
+    painter.restore();
+}
+
+void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels, std::size_t i, TrailCursor& cursor)
+{
+    const model::World& world = m_runner.world();
+    const std::int64_t shown = world.stepCount;
+    const std::deque<TrailPoint>& points = m_trailPoints[i];
+    // The points not drawn yet: only the newest few while running, so look from the back.
+    auto from = points.end();
+    while (from != points.begin() && std::prev(from)->step > cursor.lastStep)
+        --from;
+    if (from == points.end() || from->step > shown)
+        return;
+    QPolygonF& line = m_lineBuffer;
+    std::vector<QPointF>& dots = m_dotBuffer;
+    line.clear();
+    dots.clear();
+    if (cursor.hasLine)
+        line << cursor.lineEnd;
+    QPointF skipped; // the last point left out of the line, px
+    bool pending = false;
+    for (auto it = from; it != points.end(); ++it) {
+        const TrailPoint& point = *it;
+        if (point.step > shown)
+            break; // scrubbed back: the trail ends where the body is
+        cursor.lastStep = point.step;
+        const QPointF px = toPixels.map(point.position);
+        // A point within a pixel of the last one drawn adds nothing to see and costs a joint
+        // to stroke: a body at rest would pile up thousands in one place.
+        if (!line.isEmpty() && squaredDistance(line.back(), px) < kTrailMinSegmentPx * kTrailMinSegmentPx) {
+            skipped = px;
+            pending = true;
+        } else {
+            line << px;
+            pending = false;
         }
-        if (pending)
-            line << skipped; // the trail still ends at the body
+        // A dot that would overlap the last one drawn adds nothing: a body at rest would
+        // stack a dot every 0.1 s on one spot.
+        const QPointF* lastDot = !dots.empty() ? &dots.back() : cursor.hasDot ? &cursor.lastDot : nullptr;
+        if (point.step % m_dotSteps == 0 &&
+            (!lastDot || squaredDistance(*lastDot, px) >= 4 * constants::kTrailDotRadiusPx * constants::kTrailDotRadiusPx))
+            dots.push_back(px);
+    }
+    // A whole trail is drawn even as a single point, as it always was; growth only when it grew.
+    const qsizetype carried = cursor.hasLine ? 1 : 0;
+    if (!line.isEmpty()) {
+        cursor.hasLine = true;
+        cursor.lineEnd = line.back();
+    }
+    if (!dots.empty()) {
+        cursor.hasDot = true;
+        cursor.lastDot = dots.back();
+    }
+    if (pending)
+        line << skipped; // the trail still ends at the body
+    const model::Color c = world.bodies[i].color;
+    const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
+    if (line.size() > carried) {
         painter.setPen(QPen(colour, constants::kTrailWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
+    }
+    if (!dots.empty()) {
         painter.setPen(Qt::NoPen);
         painter.setBrush(colour.darker());
         for (const QPointF& dot : dots)
             painter.drawEllipse(dot, constants::kTrailDotRadiusPx, constants::kTrailDotRadiusPx);
     }
-    painter.restore();
 }
 
 void CanvasInstruments::paintVectors(QPainter& painter) const

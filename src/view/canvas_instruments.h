@@ -11,6 +11,7 @@
 #include <QColor>
 #include <QCoreApplication>
 #include <QObject>
+#include <QPolygonF>
 #include <QRectF>
 #include <QString>
 
@@ -103,8 +104,21 @@ public:
     /// The forces of the state shown (empty when no force or acceleration arrow is shown).
     const std::vector<controller::BodyForces>& forces() const { return m_forces; }
 
-    /// Paints the trails; `painter` is in scene coordinates (m, y up).
-    void paintTrails(QPainter& painter) const;
+    /// Paints the trails whole; `painter` is in scene coordinates (m, y up). Remembers how far
+    /// each trail was drawn, for paintTrailGrowth().
+    void paintTrails(QPainter& painter);
+    /// Paints only what the trails gained since the last paintTrails() or paintTrailGrowth(), onto
+    /// a picture that already holds what those drew (the canvas's cached layer, canvas_view.h);
+    /// `painter` is in scene coordinates with the same transform as then. Each trail goes on from
+    /// the last point it drew, with the same thinning of points and dots as a whole paint, so
+    /// the picture differs from a whole paint only where segments cross: a whole paint lays body
+    /// i's trail over body j's for i > j, growth lays newer segments over older ones.
+    void paintTrailGrowth(QPainter& painter);
+    /// Changes whenever the trails stop being what was drawn plus growth: trails turned on or
+    /// off, cleared or cut back, their dots or their bodies changed, or their oldest points
+    /// dropped by more than constants::kTrailTrimRedrawFraction of a trail's length since the
+    /// last change. A picture drawn at an older revision must be painted whole again.
+    std::uint64_t trailRevision() const { return m_trailRevision; }
     /// Paints the arrows; `painter` is in scene coordinates.
     void paintVectors(QPainter& painter) const;
     /// Paints the legend into the viewport rectangle `viewport` (px); the painter's transform is
@@ -138,6 +152,19 @@ private:
     void startTrails();
     /// True when `kind` is drawn for some body.
     bool drawsKindAnywhere(VectorKind kind) const;
+    /// How far one trail has been drawn: where its line and its dots stopped, px.
+    struct TrailCursor {
+        std::int64_t lastStep = -1; ///< step of the last point taken; -1: nothing drawn yet
+        bool hasLine = false;
+        QPointF lineEnd; ///< the last point kept in the line (a point skipped after it is not)
+        bool hasDot = false;
+        QPointF lastDot;
+    };
+    /// Draws body i's trail points after `cursor` into `painter` (pixels, identity transform)
+    /// mapped by `toPixels`, and moves the cursor on; a default cursor draws the whole trail.
+    void drawTrail(QPainter& painter, const QTransform& toPixels, std::size_t i, TrailCursor& cursor);
+    /// A new trail revision: what was drawn no longer holds.
+    void invalidateTrailPictures();
 
     const SimulationRunner& m_runner;
     std::array<bool, kVectorKindCount> m_shown{};
@@ -149,6 +176,14 @@ private:
     bool m_trails = false;
     int m_dotSteps;
     std::vector<std::deque<TrailPoint>> m_trailPoints;
+    std::vector<TrailCursor> m_trailCursors; ///< per body: how far the last paint drew its trail
+    std::uint64_t m_trailRevision = 0;
+    /// Steps since the last revision in which some trail dropped its oldest point: about the
+    /// points the longest trail dropped.
+    std::size_t m_trimmedSinceRevision = 0;
+    /// Reused by drawTrail(), so that painting allocates nothing once they have grown.
+    QPolygonF m_lineBuffer;
+    std::vector<QPointF> m_dotBuffer;
     std::vector<controller::BodyForces> m_forces;
 };
 

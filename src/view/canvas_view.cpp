@@ -3,6 +3,7 @@
 #include "controller/soft/soft_body_shape.h"
 
 #include "view/body_item.h"
+#include "view/body_stamps.h"
 #include "view/canvas_instruments.h"
 #include "view/soft_detail_item.h"
 #include "view/joint_item.h"
@@ -20,6 +21,7 @@
 #include "view/view_constants.h"
 
 #include <QGraphicsScene>
+#include <QImage>
 #include <QKeyEvent>
 #include <QLineF>
 #include <QMouseEvent>
@@ -102,6 +104,7 @@ CanvasView::CanvasView(const SimulationRunner& runner, QWidget* parent)
     , m_runner(runner)
     , m_scene(new QGraphicsScene(this))
     , m_instruments(new CanvasInstruments(runner, this))
+    , m_stamps(std::make_unique<BodyStamps>())
 {
     // Every item moves every frame, so a BSP index would be rebuilt constantly for nothing.
     m_scene->setItemIndexMethod(QGraphicsScene::NoIndex);
@@ -128,6 +131,25 @@ CanvasView::CanvasView(const SimulationRunner& runner, QWidget* parent)
     connect(&m_runner, &SimulationRunner::worldChanged, m_instruments, &CanvasInstruments::refresh);
     connect(&m_runner, &SimulationRunner::sceneReplaced, m_instruments, &CanvasInstruments::clear);
     connect(m_instruments, &CanvasInstruments::changed, viewport(), [this] { viewport()->update(); });
+    // The background layer holds the trails in the bodies' colours as they were drawn: an edit or
+    // a state shown from the timeline paints it whole; steps only add the trails' growth
+    // (updateBackgroundLayer()), and once no new state came for a moment it is painted whole, so
+    // that the canvas at rest shows exactly what a whole paint shows.
+    connect(&m_runner, &SimulationRunner::worldChanged, this, [this] { m_layerDirty = true; });
+    m_layerSettle.setSingleShot(true);
+    m_layerSettle.setInterval(constants::kLayerSettleMs);
+    connect(&m_layerSettle, &QTimer::timeout, this, [this] {
+        // A run slower than the settling time (a heavy scene, a busy machine) would otherwise
+        // paint the layer whole between every two states: wait for it to stop.
+        if (m_runner.isRunning()) {
+            m_layerSettle.start();
+            return;
+        }
+        if (m_layerGrown) {
+            m_layerDirty = true;
+            viewport()->update();
+        }
+    });
     rebuildItems();
     frameScene();
 }
@@ -183,6 +205,7 @@ void CanvasView::rebuildItems()
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
         const model::BodyId id{static_cast<std::uint32_t>(i)};
         auto* item = new BodyItem(id, world.bodies[i]);
+        item->setStamps(m_paintCaches ? m_stamps.get() : nullptr);
         m_scene->addItem(item);
         m_bodyItems.push_back(item);
         if (world.softGrid(id)) {
@@ -216,9 +239,20 @@ void CanvasView::rebuildItems()
     showSelection();
 }
 
+void CanvasView::setPaintCaches(bool on)
+{
+    m_paintCaches = on;
+    m_layerDirty = true;
+    m_backgroundLayer = QImage();
+    for (BodyItem* item : m_bodyItems)
+        item->setStamps(on ? m_stamps.get() : nullptr);
+    viewport()->update();
+}
+
 void CanvasView::setLook(const CanvasLook& look)
 {
     m_look = look;
+    m_layerDirty = true;
     applyLookToItems();
     resetCachedContent();
     viewport()->update();
@@ -644,6 +678,63 @@ void CanvasView::drawForeground(QPainter* painter, const QRectF&)
 
 void CanvasView::drawBackground(QPainter* painter, const QRectF& rect)
 {
+    // The cached layer is made for the viewport; another device (render() into a picture) or a
+    // paint with caches off draws everything afresh.
+    if (!m_paintCaches || painter->device() != viewport()) {
+        drawPaper(painter, rect);
+        // Trails lie on the paper, under the bodies that left them.
+        m_instruments->paintTrails(*painter);
+        if (m_paintCaches)
+            m_layerDirty = true; // the trails' cursors now describe that other picture
+        return;
+    }
+    updateBackgroundLayer(*painter);
+    painter->save();
+    painter->resetTransform();
+    painter->drawImage(QPointF(0, 0), m_backgroundLayer);
+    painter->restore();
+}
+
+void CanvasView::updateBackgroundLayer(QPainter& viewportPainter)
+{
+    const QTransform toPixels = viewportPainter.worldTransform();
+    const qreal ratio = viewport()->devicePixelRatioF();
+    const QSize size = viewport()->size() * ratio;
+    // Whole again when the picture no longer matches: zoom, pan, size, look, the trails' revision,
+    // an edit, or settled after growth (m_layerSettle).
+    const bool whole = m_layerDirty || m_backgroundLayer.size() != size || m_layerTransform != toPixels ||
+                       m_layerRevision != m_instruments->trailRevision();
+    if (whole) {
+        if (m_backgroundLayer.size() != size) {
+            m_backgroundLayer = QImage(size, QImage::Format_ARGB32_Premultiplied);
+            m_backgroundLayer.setDevicePixelRatio(ratio);
+        }
+        // Paper under every pixel first: the scene rectangle of the viewport's pixel rectangle
+        // may stop short of its last row and column.
+        m_backgroundLayer.fill(m_look.background);
+        QPainter layer(&m_backgroundLayer);
+        layer.setRenderHints(viewportPainter.renderHints());
+        layer.setFont(viewportPainter.font());
+        layer.setWorldTransform(toPixels);
+        drawPaper(&layer, mapToScene(viewport()->rect().adjusted(-1, -1, 1, 1)).boundingRect());
+        m_instruments->paintTrails(layer);
+        m_layerTransform = toPixels;
+        m_layerRevision = m_instruments->trailRevision();
+        m_layerDirty = false;
+        m_layerGrown = false;
+    } else if (m_instruments->showsTrails() && m_layerStep != m_runner.world().stepCount) {
+        QPainter layer(&m_backgroundLayer);
+        layer.setRenderHints(viewportPainter.renderHints());
+        layer.setWorldTransform(toPixels);
+        m_instruments->paintTrailGrowth(layer);
+        m_layerGrown = true;
+        m_layerSettle.start();
+    }
+    m_layerStep = m_runner.world().stepCount;
+}
+
+void CanvasView::drawPaper(QPainter* painter, const QRectF& rect) const
+{
     painter->save();
     painter->fillRect(rect, m_look.background);
 
@@ -683,8 +774,6 @@ void CanvasView::drawBackground(QPainter* painter, const QRectF& rect)
         drawGridLabels(painter, rect, grid.spacing, grid.linesPerMajor);
     }
     painter->restore();
-    // Trails lie on the paper, under the bodies that left them.
-    m_instruments->paintTrails(*painter);
 }
 
 void CanvasView::drawGridLabels(QPainter* painter, const QRectF& rect, double spacing, int linesPerMajor) const

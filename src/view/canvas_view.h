@@ -8,9 +8,13 @@
 #include "view/tools/tool.h"
 
 #include <QGraphicsView>
+#include <QImage>
+#include <QTimer>
+#include <QTransform>
 #include <QRectF>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -20,6 +24,7 @@ class QGraphicsScene;
 namespace impetus::view {
 
 class BodyItem;
+class BodyStamps;
 class CanvasInstruments;
 class JointItem;
 class LessonSession;
@@ -146,6 +151,14 @@ public:
     /// Draws with `look` from now on, items and background alike.
     void setLook(const CanvasLook& look);
 
+    /// Whether the canvas paints through its caches (on by default): the paper, grid and trails
+    /// kept in a layer of the viewport's size, to which a run only adds the trails' new points,
+    /// and round bodies stamped from pictures drawn once per colour and size (body_stamps.h).
+    /// Off paints everything afresh on every paint, as the reference the caches are tested
+    /// against and the benchmark's "before".
+    bool paintCaches() const { return m_paintCaches; }
+    void setPaintCaches(bool on);
+
 public slots:
     /// Fits frameRect() into the viewport, keeping the aspect ratio, with y up.
     void frameWorld();
@@ -204,6 +217,10 @@ private:
     /// and strain when they are shown.
     void syncSoftBody(std::size_t i);
     void drawGridLabels(QPainter* painter, const QRectF& rect, double spacing, int linesPerMajor) const;
+    /// The paper, the grid and its labels over the scene rectangle `rect`.
+    void drawPaper(QPainter* painter, const QRectF& rect) const;
+    /// Brings m_backgroundLayer up to date for a paint of the viewport by `viewportPainter`.
+    void updateBackgroundLayer(QPainter& viewportPainter);
     /// Hands m_look's line scale and outlines to every item.
     void applyLookToItems();
 
@@ -228,6 +245,16 @@ private:
     QPointF m_lastPanPos; ///< px
     QString m_lastMessage;
     CanvasLook m_look;
+    bool m_paintCaches = true;
+    /// Paper, grid and trails as the viewport shows them, device pixels (paintCaches()).
+    QImage m_backgroundLayer;
+    QTransform m_layerTransform; ///< scene → viewport when the layer was painted whole
+    std::uint64_t m_layerRevision = 0; ///< CanvasInstruments::trailRevision() then
+    bool m_layerDirty = true; ///< must be painted whole at the next paint
+    bool m_layerGrown = false; ///< holds trail growth, not yet painted whole
+    std::int64_t m_layerStep = -1; ///< World::stepCount the layer shows
+    QTimer m_layerSettle; ///< paints the layer whole once the states stop coming
+    std::unique_ptr<BodyStamps> m_stamps; ///< shared by the body items
     const LessonSession* m_lessonSession = nullptr;
 };
 

@@ -5,6 +5,8 @@
 #include "controller/soft/soft_comparison.h"
 #include "view/canvas_view.h"
 #include "view/example_catalog.h"
+#include "view/explain_menu.h"
+#include "view/energy_ledger_chart.h"
 #include "view/graph_panel.h"
 #include "view/language.h"
 #include "view/lesson_dock.h"
@@ -127,6 +129,8 @@ MainWindow::MainWindow(QWidget* parent)
     addLanguageMenu(*this);
     // The Lesson menu and dock; the canvas, the pane and Delete obey the lesson's locks.
     m_lesson = addLessons(*this);
+    // The Explain menu: Separating Axes and the Collision Inspector.
+    addExplainers(*this);
 
     m_canvas->setFocus();
     updateTitle();
@@ -450,8 +454,32 @@ void MainWindow::createInstrumentMenus(QMenu* viewMenu)
     m_newGraphAction->setStatusTip(tr("Plot a quantity of the selected body against time, or against another quantity"));
     addAction(m_newGraphAction);
 
+    QAction* ledgerAction = viewMenu->addAction(tr("Energy &Ledger"), this, &MainWindow::showEnergyLedger);
+    ledgerAction->setObjectName(QStringLiteral("energyLedgerAction"));
+    ledgerAction->setStatusTip(tr("Chart where the energy goes: what each cause has taken out, stacked over time"));
+
     connect(&instruments, &CanvasInstruments::samplingChanged, this, &MainWindow::updateSampling);
     connect(m_timeline, &Timeline::futureDiscarded, &instruments, &CanvasInstruments::discardAfter);
+}
+
+void MainWindow::showEnergyLedger()
+{
+    if (auto* open = findChild<QDockWidget*>(QStringLiteral("energyLedgerDock"))) {
+        open->raise();
+        return;
+    }
+    auto* dock = new QDockWidget(tr("Energy Ledger"), this);
+    dock->setObjectName(QStringLiteral("energyLedgerDock"));
+    // A closed chart is gone, and with it the ledger's booking in the steps.
+    dock->setAttribute(Qt::WA_DeleteOnClose);
+    auto* chart = new EnergyLedgerChart(dock);
+    dock->setWidget(chart);
+    connect(&m_document->runner(), &SimulationRunner::sampled, chart, &EnergyLedgerChart::addSamples);
+    connect(m_document, &SceneDocument::sceneReplaced, chart, &EnergyLedgerChart::clear);
+    connect(m_timeline, &Timeline::futureDiscarded, chart, &EnergyLedgerChart::discardAfter);
+    connect(dock, &QObject::destroyed, this, [this] { QTimer::singleShot(0, this, &MainWindow::updateSampling); });
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    updateSampling();
 }
 
 GraphPanel* MainWindow::addGraph(const QString& bodyName, GraphQuantity y, GraphQuantity x)
@@ -496,6 +524,7 @@ void MainWindow::updateSampling()
             request.bodies.push_back(*panel->body());
         request.totals = true;
     }
+    request.ledger = findChild<QDockWidget*>(QStringLiteral("energyLedgerDock")) != nullptr;
     m_document->runner().setSampleRequest(std::move(request));
 }
 

@@ -144,6 +144,9 @@ public:
     /// Opens a graph of `y` against `x` for the body called `bodyName` (the first moving body when
     /// empty) in a dock of its own (object name "graphDock"), and returns it.
     GraphPanel* addGraph(const QString& bodyName, GraphQuantity y, GraphQuantity x = GraphQuantity::Time);
+    /// View › Energy Ledger: opens the ledger chart in a dock (or raises it), which asks the runner
+    /// to book every step's energy by cause while it is open.
+    void showEnergyLedger();
     /// The graphs open, oldest first.
     std::vector<GraphPanel*> graphPanels() const;
     /// View › New Graph: a graph of the selected body (or the first moving one).

@@ -6,9 +6,11 @@
 
 #include "controller/body_readout.h"
 #include "controller/diagnostics.h"
+#include "controller/energy_ledger.h"
 #include "model/world.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace impetus::view {
@@ -18,7 +20,9 @@ struct SampleRequest {
     bool centres = false; ///< every body's centre of mass (trails)
     std::vector<std::uint32_t> bodies; ///< the bodies whose readout is recorded (graphs), by index
     bool totals = false; ///< the world's energies, momentum and collision count (graphs)
-    bool empty() const { return !centres && bodies.empty() && !totals; }
+    /// The energy ledger's lines (the ledger chart): the steps are booked by cause while it is set.
+    bool ledger = false;
+    bool empty() const { return !centres && bodies.empty() && !totals && !ledger; }
     bool operator==(const SampleRequest&) const = default;
 };
 
@@ -44,6 +48,8 @@ struct StepSample {
     /// Per requested body that exists, in the request's order.
     std::vector<BodySample> bodies;
     WorldTotals totals; ///< meaningful with request.totals
+    /// With request.ledger: the ledger after the step (its time is when it started, s).
+    std::optional<controller::LedgerSample> ledger;
 };
 
 /// The record of `world` as `request` asks for it.

@@ -104,6 +104,7 @@ StepOutcome StepWorker::compute(StepBatch batch, const StepFunction& step)
     const double dt = batch.world.settings.timeStep;
     double owed = batch.owed.value_or(0);
     const auto start = std::chrono::steady_clock::now();
+    m_simulation.setLedger(batch.sampling.ledger ? &m_ledger : nullptr);
     // The same loop the window ran on its own thread before: a run takes steps while a whole step
     // is owed, one time step off the debt each, so the simulated time never depends on the frame.
     while (outcome.steps < batch.maxSteps && (!batch.owed || owed >= dt)) {
@@ -113,8 +114,13 @@ StepOutcome StepWorker::compute(StepBatch batch, const StepFunction& step)
         }
         step(m_simulation, batch.world);
         ++outcome.steps;
-        if (!batch.sampling.empty())
+        if (!batch.sampling.empty()) {
             outcome.samples.push_back(takeSample(batch.world, batch.sampling));
+            if (batch.sampling.ledger && m_ledger.started()) {
+                outcome.samples.back().ledger = controller::LedgerSample{
+                    m_ledger.startTime(), m_ledger.initialEnergy(), m_ledger.currentEnergy(), m_ledger.losses()};
+            }
+        }
         if (batch.owed)
             owed -= dt;
         if (batch.wallBudget && std::chrono::steady_clock::now() - start >= *batch.wallBudget)

@@ -3,6 +3,7 @@
 /// The thread that computes the simulation's steps for the window, so that a slow step never
 /// holds up painting and input.
 
+#include "controller/energy_ledger.h"
 #include "controller/simulation.h"
 #include "controller/soft/soft_stability.h"
 #include "model/world.h"
@@ -98,6 +99,9 @@ private:
 
     std::function<void()> m_finished;
     controller::Simulation m_simulation; ///< used on the worker's thread only
+    /// Books the steps by cause while a batch's sampling asks for it (SampleRequest::ledger); it
+    /// starts again by itself when the world it is shown was edited or replaced.
+    controller::EnergyLedger m_ledger;
     mutable std::mutex m_mutex;
     std::condition_variable m_changed; ///< a batch came, an outcome is ready, or quitting
     std::optional<StepBatch> m_batch; ///< handed over, not yet picked up by the thread

@@ -81,6 +81,17 @@ inline constexpr double kMinimumGridSpacingPx = 28.0;
 
 /// Width of body outlines and springs, px (cosmetic: the same at every zoom).
 inline constexpr double kOutlineWidthPx = 1.5;
+/// The canvas's cached layer of paper, grid and trails (canvas_view.h) takes in the trails' growth
+/// and is painted whole once no new state has come for this long while not running, ms: at rest
+/// the canvas shows exactly what a whole paint shows, a few frames after the last step.
+inline constexpr int kLayerSettleMs = 100;
+/// A round body's stamped picture (body_stamps.h) puts its centre on a grid of this many steps
+/// per pixel: within 1/8 px of the true centre, which antialiasing cannot show, with 16 pictures
+/// per look and size.
+inline constexpr int kStampSubpixelSteps = 4;
+/// The most stamp pictures kept (about 4 KB each at a 12 px radius); beyond it they are all
+/// dropped and drawn again as needed, which only a long series of zooms reaches.
+inline constexpr std::size_t kMaxBodyStamps = 2048;
 
 /// Outline colour factor for QColor::darker(): 160 % darker than the fill reads as an edge.
 inline constexpr int kOutlineDarkerFactor = 160;
@@ -260,6 +271,13 @@ inline constexpr std::size_t kMaxTrailPoints = 36000;
 /// The most points all trails keep together, so that trails on a large scene stay small: 4 million
 /// points of 24 bytes (about 100 MB). The 2000-body scene keeps 2000 per body, 8 s at 240 Hz.
 inline constexpr std::size_t kMaxTrailPointsInAll = 4000000;
+/// The canvas draws trails into a cached layer and adds only their new points while running; a
+/// trail's dropped oldest points stay in that layer until it is painted whole again, which
+/// happens once some trail has dropped this fraction of its greatest length: a whole repaint of
+/// the 2000 trails of the 2000-body scene costs many frames' budget, so it is done every
+/// quarter of a trail's length (2 s of that run) rather than every frame, and the trails shown
+/// run at most a quarter longer than kept in between.
+inline constexpr double kTrailTrimRedrawFraction = 0.25;
 /// Trail line width and dot radius, px. One pixel keeps the trail on Qt's fast path for thin lines:
 /// at 1.5 px the 2000 trails of the 2000-body scene took 1.3 s a paint after 6 s, at 1 px 0.2 s
 /// (bench/frame_budget.cpp).
@@ -273,6 +291,12 @@ inline constexpr std::size_t kMaxGraphSamples = 864000;
 /// A graph redraws its series at most this often while running, ms: Qt Charts redraws a series
 /// of thousands of points slower than the physics adds them.
 inline constexpr int kGraphRefreshMs = 100;
+
+/// Energy ledger chart: the most points it keeps; beyond that every other one is dropped, so a
+/// long run stays readable and cheap to redraw (a stacked area redraws all its points).
+inline constexpr std::size_t kMaxLedgerPoints = 2000;
+/// Fill alpha of the ledger chart's bands: the band edges stay visible where bands cross zero.
+inline constexpr int kLedgerBandAlpha = 200;
 
 /// Ruler and protractor: how close to a body centre or vertex a click snaps to it, px.
 inline constexpr double kMeasureSnapPx = 10.0;

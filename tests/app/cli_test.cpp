@@ -169,7 +169,25 @@ TEST_F(Cli, SummaryKeysComeInTheContractsOrder)
     for (const auto& item : s.items())
         keys.push_back(item.key());
     EXPECT_EQ(keys, (std::vector<std::string>{"time", "steps", "collisions", "energy", "momentum",
-                                              "angularMomentum", "bodies"}));
+                                              "angularMomentum", "bodies", "energyLedger"}));
+}
+
+// The energy ledger (an addition to the contract, docs/cli.md): a projectile in RK4 loses nothing
+// to any cause, and its ledger starts at the scene's energy, ends at the summary's and closes.
+TEST_F(Cli, SummaryEnergyLedgerOfAProjectile)
+{
+    const CliResult r = run({"run", dataFile("projectile.json"), "--steps", "100", "--summary", "-"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(r.out);
+    const nlohmann::json& ledger = s["energyLedger"];
+    const double initial = 0.5 * 0.5 * 25 + 0.5 * 9.81 * 1; // ½mv₀² + mgy₀, J
+    EXPECT_NEAR(ledger["initial"]["total"].get<double>(), initial, 1e-12);
+    EXPECT_EQ(ledger["current"]["total"].get<double>(), s["energy"]["total"].get<double>());
+    for (const char* cause : {"impacts", "friction", "drag", "springDamping", "softDamping", "joints", "correction"})
+        EXPECT_EQ(ledger["losses"][cause].get<double>(), 0.0) << cause;
+    // RK4 is exact on a parabola: the drift is round-off.
+    EXPECT_NEAR(ledger["losses"]["drift"].get<double>(), 0.0, 1e-12 * initial);
+    EXPECT_LT(ledger["closure"].get<double>(), 1e-9);
 }
 
 TEST_F(Cli, SummaryToAFile)

@@ -4,6 +4,7 @@
 #include "controller/collision/narrow_phase.h"
 
 #include "model/polygon.h"
+#include "support/polygon_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -35,27 +36,8 @@ struct CaseName {
 // ---------------------------------------------------------------------------------------------
 // Shapes
 
-/// A convex polygon that owns its vertices and normals (PolygonShape only views them).
-struct Polygon {
-    std::vector<Vec2> vertices;
-    std::vector<Vec2> normals;
-    Vec2 centroid = Vec2::Zero();
-
-    PolygonShape shape() const { return PolygonShape{vertices, normals, centroid}; }
-};
-
-/// A polygon from counter-clockwise vertices: outward unit normals and the vertex average.
-Polygon makePolygon(std::vector<Vec2> vertices)
-{
-    Polygon p;
-    p.vertices = std::move(vertices);
-    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-        const Vec2 e = p.vertices[(i + 1) % p.vertices.size()] - p.vertices[i];
-        p.normals.push_back(Vec2(e.y(), -e.x()).normalized());
-        p.centroid += p.vertices[i] / static_cast<Scalar>(p.vertices.size());
-    }
-    return p;
-}
+using testing::makePolygon;
+using testing::Polygon;
 
 /// The axis-aligned box [x0, x1]×[y0, y1], vertices counter-clockwise from the lower left, so edge
 /// 0 is the bottom, 1 the right side, 2 the top and 3 the left side.

@@ -1,9 +1,10 @@
-// Takes the screenshots of docs/images/ that show the classroom features: the whole window, as a
-// user sees it, in projector mode, in German and Spanish, and with a lesson. Run by scripts/screenshots (under Xvfb, or on
-// Qt's offscreen platform); not a test.
+// Takes the screenshots of docs/images/: the whole window, as a user sees it, in projector mode, in
+// German and Spanish, with a lesson, and the pictures of the user guide (doc_screenshots_guide.cpp).
+// Run by scripts/screenshots (under Xvfb, or on Qt's offscreen platform); not a test.
 //
 //   doc_screenshots OUTPUT_DIR
 
+#include "doc_screenshots_guide.h"
 #include "test_settings.h"
 #include "view/language.h"
 #include "view/main_window.h"
@@ -107,6 +108,7 @@ int main(int argc, char* argv[])
     }
     const Shot shots[] = {
         {"projector-mode.png", "", true, "default", 1104, -1},
+        {"window-collision.png", "", false, "default", 1105, -1},
         {"window-german.png", "de", false, "incline", 240, 3},
         {"window-spanish.png", "es", false, "pendulum", 120, -1},
     };
@@ -122,5 +124,12 @@ int main(int argc, char* argv[])
         return 1;
     }
     std::printf("%s\n", qPrintable(QDir(folder).filePath(QStringLiteral("lesson-incline.png"))));
+    // The guide is in English, whatever the machine's language.
+    view::setLanguageSetting(QStringLiteral("en"));
+    view::applyLanguage(*QCoreApplication::instance(), view::chosenLocale());
+    if (!view::screenshots::takeGuidePictures(folder)) {
+        std::fputs("doc_screenshots: could not take a picture of the user guide\n", stderr);
+        return 1;
+    }
     return 0;
 }

@@ -1,7 +1,8 @@
 // Not a test: the pictures of docs/app.md's probe and tool icons, taken from the real window driven
-// as a user would (keys and clicks). scripts/screenshots-instruments runs it under Xvfb.
+// as a user would (keys and clicks). scripts/screenshots runs it under Xvfb.
 // Usage: instruments_screenshots OUTPUT_DIRECTORY
 
+#include "screenshot_files.h"
 #include "test_settings.h"
 #include "view/canvas_instruments.h"
 #include "view/canvas_view.h"
@@ -28,30 +29,12 @@ namespace {
 constexpr int kWidth = 1100;
 constexpr int kHeight = 640;
 
-bool save(QWidget& widget, const QDir& directory, const QString& name)
-{
-    const QString path = directory.filePath(name);
-    if (!widget.grab().save(path)) {
-        std::fprintf(stderr, "cannot write %s\n", qPrintable(path));
-        return false;
-    }
-    std::printf("%s\n", qPrintable(path));
-    return true;
-}
-
-bool showWindow(MainWindow& window)
-{
-    window.resize(kWidth, kHeight);
-    window.show();
-    window.activateWindow();
-    return QTest::qWaitForWindowExposed(&window);
-}
-
 /// The projectile example in flight, with its trail, its velocity arrow, and the probe on the ball.
 bool probePicture(const QDir& directory)
 {
     MainWindow window;
-    if (!window.openScene(QStringLiteral(":/examples/projectile.json")).isEmpty() || !showWindow(window))
+    if (!window.openScene(QStringLiteral(":/examples/projectile.json")).isEmpty() ||
+        !impetus::view::test::showWindowAt(window, kWidth, kHeight))
         return false;
     impetus::view::CanvasView& canvas = window.canvas();
     window.trailsAction()->trigger();
@@ -70,7 +53,7 @@ bool probePicture(const QDir& directory)
     }
     QTest::mouseMove(canvas.viewport(), QPoint(canvas.viewport()->width() - 10, canvas.viewport()->height() - 10));
     QApplication::processEvents();
-    return save(window, directory, QStringLiteral("instruments-probe.png"));
+    return impetus::view::test::saveGrab(window, directory, QStringLiteral("instruments-probe.png"));
 }
 
 /// A sheet of every tool's and run control's icon, large, each with its name and shortcut as the

@@ -12,6 +12,8 @@
 
 namespace impetus::controller {
 
+struct CollisionTrace;
+
 /// A convex polygon in world coordinates: counter-clockwise vertices and the outward unit normal
 /// of each edge (normals[i] belongs to the edge from vertices[i] to vertices[i+1]).
 struct PolygonShape {
@@ -45,16 +47,22 @@ using ConvexShape = std::variant<PolygonShape, CircleShape, EllipseShape>;
 /// incident face against the reference face (the face of least penetration); everything curved
 /// gives one point. Feature ids are stable from step to step while the same features touch.
 /// Ellipse results are accurate to 1e-6 m.
-Manifold collide(const ConvexShape& a, const ConvexShape& b, Scalar speculativeDistance);
+/// With `trace` (collision_trace.h), the routine records what it did there, axis by axis: for the
+/// explainers only; the step passes none, and then nothing is recorded.
+Manifold collide(const ConvexShape& a, const ConvexShape& b, Scalar speculativeDistance,
+                 CollisionTrace* trace = nullptr);
 
 /// Polygon–polygon (SAT over both polygons' face normals, then clipping).
-Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance);
+Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance,
+                         CollisionTrace* trace = nullptr);
 
 /// Polygon–circle.
-Manifold collidePolygonCircle(const PolygonShape& a, const CircleShape& b, Scalar speculativeDistance);
+Manifold collidePolygonCircle(const PolygonShape& a, const CircleShape& b, Scalar speculativeDistance,
+                              CollisionTrace* trace = nullptr);
 
 /// Circle–circle.
-Manifold collideCircles(const CircleShape& a, const CircleShape& b, Scalar speculativeDistance);
+Manifold collideCircles(const CircleShape& a, const CircleShape& b, Scalar speculativeDistance,
+                        CollisionTrace* trace = nullptr);
 
 /// `m`, or no contact when any of its numbers is NaN or infinite: a body flung to infinity must
 /// not reach the solver as a NaN impulse; the simulation's own checks notice the bad state.

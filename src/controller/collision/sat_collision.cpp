@@ -16,6 +16,7 @@
 
 #include "controller/collision/narrow_phase.h"
 
+#include "controller/collision/collision_trace.h"
 #include "model/constants.h"
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 namespace impetus::controller {
 
@@ -60,11 +62,37 @@ bool offerFace(FaceSeparation& best, std::size_t i, Scalar deepest, Scalar specu
     return deepest > speculativeDistance;
 }
 
+/// Records face i of `p` (piece `owner`: 0 for A, 1 for B) with the separation the search found
+/// for it, and both pieces' projections on its normal. For the explainers only.
+void noteFace(CollisionTrace& trace, int owner, const PolygonShape& p, const PolygonShape& q, std::size_t i,
+              Scalar separation)
+{
+    TracedAxis axis;
+    axis.owner = owner;
+    axis.face = i;
+    axis.normal = p.normals[i];
+    axis.faceStart = p.vertices[i];
+    axis.faceEnd = p.vertices[nextIndex(i, p.vertices.size())];
+    axis.separation = separation;
+    const auto interval = [&](const PolygonShape& shape, Scalar& low, Scalar& high) {
+        low = std::numeric_limits<Scalar>::infinity();
+        high = -low;
+        for (const Vec2& v : shape.vertices) {
+            low = std::min(low, axis.normal.dot(v));
+            high = std::max(high, axis.normal.dot(v));
+        }
+    };
+    interval(p, axis.ownerMin, axis.ownerMax);
+    interval(q, axis.otherMin, axis.otherMax);
+    trace.axes.push_back(axis);
+}
+
 /// maxFaceSeparation for a q of `QCount` vertices, or of any number when QCount is 0. A fixed
 /// count lets the compiler unroll the loop over q and keep q's vertices, each copied into both
 /// lanes once, in registers for all of p's faces (GCC 12 does).
 template <std::size_t QCount>
-FaceSeparation maxFaceSeparationOf(const PolygonShape& p, const PolygonShape& q, Scalar speculativeDistance)
+FaceSeparation maxFaceSeparationOf(const PolygonShape& p, const PolygonShape& q, Scalar speculativeDistance,
+                                   CollisionTrace* trace, int owner)
 {
     // Two faces at a time, one in each lane of a two-element array: each lane does exactly what
     // the scalar nᵢ·(w − vᵢ) and std::min would, vertex by vertex in the same order, so the
@@ -84,8 +112,14 @@ FaceSeparation maxFaceSeparationOf(const PolygonShape& p, const PolygonShape& q,
             const Vec2& w = q.vertices[j];
             deepest = deepest.min(nx * (w.x() - vx) + ny * (w.y() - vy));
         }
-        if (offerFace(best, i, deepest[0], speculativeDistance) ||
-            offerFace(best, i + 1, deepest[1], speculativeDistance))
+        // Face i is offered before face i + 1 is looked at, so that a trace ends where the search did.
+        if (trace != nullptr)
+            noteFace(*trace, owner, p, q, i, deepest[0]);
+        if (offerFace(best, i, deepest[0], speculativeDistance))
+            return best;
+        if (trace != nullptr)
+            noteFace(*trace, owner, p, q, i + 1, deepest[1]);
+        if (offerFace(best, i + 1, deepest[1], speculativeDistance))
             return best;
     }
     if (i < n) {
@@ -94,16 +128,36 @@ FaceSeparation maxFaceSeparationOf(const PolygonShape& p, const PolygonShape& q,
         Scalar deepest = std::numeric_limits<Scalar>::infinity();
         for (const Vec2& w : q.vertices)
             deepest = std::min(deepest, normal.x() * (w.x() - v.x()) + normal.y() * (w.y() - v.y()));
+        if (trace != nullptr)
+            noteFace(*trace, owner, p, q, i, deepest);
         offerFace(best, i, deepest, speculativeDistance);
     }
     return best;
 }
 
-FaceSeparation maxFaceSeparation(const PolygonShape& p, const PolygonShape& q, Scalar speculativeDistance)
+FaceSeparation maxFaceSeparation(const PolygonShape& p, const PolygonShape& q, Scalar speculativeDistance,
+                                 CollisionTrace* trace, int owner)
 {
     // Boxes, the most common polygons, take the unrolled loop.
-    return q.vertices.size() == 4 ? maxFaceSeparationOf<4>(p, q, speculativeDistance)
-                                  : maxFaceSeparationOf<0>(p, q, speculativeDistance);
+    return q.vertices.size() == 4 ? maxFaceSeparationOf<4>(p, q, speculativeDistance, trace, owner)
+                                  : maxFaceSeparationOf<0>(p, q, speculativeDistance, trace, owner);
+}
+
+/// The index in trace.axes of the last axis noted (the one a search ended on, or its best).
+std::optional<std::size_t> lastNoted(const CollisionTrace* trace)
+{
+    return trace != nullptr && !trace->axes.empty() ? std::optional<std::size_t>(trace->axes.size() - 1)
+                                                    : std::nullopt;
+}
+
+/// The index in trace.axes of `owner`'s face `face`.
+std::optional<std::size_t> notedFace(const CollisionTrace& trace, int owner, std::size_t face)
+{
+    for (std::size_t k = 0; k < trace.axes.size(); ++k) {
+        if (trace.axes[k].owner == owner && trace.axes[k].face == face)
+            return k;
+    }
+    return std::nullopt;
 }
 
 /// The largest distance from the centroid to a vertex, m: the size that scales the reference-face
@@ -141,14 +195,20 @@ int clipSegment(const std::array<ClipVertex, 2>& in, const Vec2& normal, Scalar 
     return count;
 }
 
-Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance)
+Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance, CollisionTrace* trace)
 {
-    const FaceSeparation faceA = maxFaceSeparation(a, b, speculativeDistance);
-    if (faceA.separation > speculativeDistance)
+    const FaceSeparation faceA = maxFaceSeparation(a, b, speculativeDistance, trace, 0);
+    if (faceA.separation > speculativeDistance) {
+        if (trace != nullptr)
+            trace->separatingAxis = lastNoted(trace);
         return {};
-    const FaceSeparation faceB = maxFaceSeparation(b, a, speculativeDistance);
-    if (faceB.separation > speculativeDistance)
+    }
+    const FaceSeparation faceB = maxFaceSeparation(b, a, speculativeDistance, trace, 1);
+    if (faceB.separation > speculativeDistance) {
+        if (trace != nullptr)
+            trace->separatingAxis = lastNoted(trace);
         return {};
+    }
 
     // Hysteresis: keep A's face unless B's is clearly better, so resting stacks do not swap
     // reference faces on rounding noise (see kReferenceFaceRelativeTolerance). The tolerance is
@@ -164,6 +224,12 @@ Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculati
     const std::size_t i1 = flip ? faceB.face : faceA.face;
     const std::size_t i2 = nextIndex(i1, refCount);
     const Vec2& normal = ref.normals[i1];
+    if (trace != nullptr) {
+        trace->bestAxisA = notedFace(*trace, 0, faceA.face);
+        trace->bestAxisB = notedFace(*trace, 1, faceB.face);
+        trace->contactAxis = flip ? trace->bestAxisB : trace->bestAxisA;
+        trace->flipped = flip;
+    }
 
     // The incident edge is the one most anti-parallel to the reference normal: it holds the
     // incident polygon's deepest vertex along −normal, and faces the reference face.
@@ -192,6 +258,14 @@ Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculati
     int count = clipSegment(incident, -tangent, -tangent.dot(v1), packId(i1, j1, true), clipped1);
     if (count == 2)
         count = clipSegment(clipped1, tangent, tangent.dot(v2), packId(i2, j1, true), clipped2);
+    if (trace != nullptr) {
+        trace->incidentFace = j1;
+        trace->incidentStart = inc.vertices[j1];
+        trace->incidentEnd = inc.vertices[j2];
+        trace->cornerToCorner = count < 2;
+        if (count == 2)
+            trace->clipped = {clipped2[0].point, clipped2[1].point};
+    }
 
     const FeatureId flipBit = flip ? kFlipBit : FeatureId{0};
     Manifold m;
@@ -232,15 +306,23 @@ Manifold polygons(const PolygonShape& a, const PolygonShape& b, Scalar speculati
 
 } // namespace
 
-Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance)
+Manifold collidePolygons(const PolygonShape& a, const PolygonShape& b, Scalar speculativeDistance,
+                         CollisionTrace* trace)
 {
     const bool wellFormed = a.vertices.size() >= 3 && a.normals.size() == a.vertices.size() &&
                             b.vertices.size() >= 3 && b.normals.size() == b.vertices.size();
-    if (!wellFormed) // a segment or a point has no face normals to test: GJK copes with it
-        return collideConvexGeneral(a, b, speculativeDistance);
-    Manifold m = polygons(a, b, speculativeDistance);
-    if (!manifoldIsFinite(m))
+    if (trace != nullptr) {
+        trace->method = wellFormed ? TraceMethod::Sat : TraceMethod::Gjk;
+        trace->speculativeDistance = speculativeDistance;
+        trace->candidateCount = wellFormed ? a.vertices.size() + b.vertices.size() : 0;
+    }
+    // A segment or a point has no face normals to test: GJK copes with it.
+    Manifold m = wellFormed ? polygons(a, b, speculativeDistance, trace)
+                            : collideConvexGeneral(a, b, speculativeDistance);
+    if (wellFormed && !manifoldIsFinite(m))
         m = Manifold{};
+    if (trace != nullptr)
+        trace->result = m;
     return m;
 }
 

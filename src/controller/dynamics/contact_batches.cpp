@@ -314,7 +314,7 @@ namespace {
 /// The poses of one side of each of N batches.
 template <std::size_t N, std::size_t... K>
 [[gnu::always_inline]] inline std::array<LanePoses, N>
-loadEach(const PositionBatch* const* batches, const std::array<std::uint32_t, kBatchLanes> PositionBatch::*side,
+loadEach(PositionBatch* const* batches, const std::array<std::uint32_t, kBatchLanes> PositionBatch::*side,
          std::span<const BatchPose> poses, std::index_sequence<K...>)
 {
     return {loadPoses(batches[K]->*side, poses)...};
@@ -323,7 +323,7 @@ loadEach(const PositionBatch* const* batches, const std::array<std::uint32_t, kB
 /// One position pass over N batches of one colour side by side (see solveTogether), keeping each
 /// lane's deepest separation in `deepest`.
 template <std::size_t N>
-[[gnu::always_inline]] inline void correctTogether(const PositionBatch* const* batches, std::span<BatchPose> poses,
+[[gnu::always_inline]] inline void correctTogether(PositionBatch* const* batches, std::span<BatchPose> poses,
                                                    Lanes& deepest)
 {
     const Lanes zero{};
@@ -338,7 +338,7 @@ template <std::size_t N>
     std::array<LanePoses, N> b = loadEach<N>(batches, &PositionBatch::readB, poses, std::make_index_sequence<N>{});
     for (std::size_t i = 0; i < 2; ++i) {
         for (std::size_t k = 0; k < N; ++k) {
-            const PositionBatch& c = *batches[k];
+            PositionBatch& c = *batches[k];
             // The two surface points and the normal, which turns with A, where the bodies are now.
             const Lanes nx = a[k].cosine * c.localNormalX - a[k].sine * c.localNormalY;
             const Lanes ny = a[k].sine * c.localNormalX + a[k].cosine * c.localNormalY;
@@ -367,6 +367,8 @@ template <std::size_t N>
             const Lanes impulse = -correction * mass;
             const Lanes px = impulse * nx;
             const Lanes py = impulse * ny;
+            c.pushX += px;
+            c.pushY += py;
             a[k].x -= c.invMassA * px;
             a[k].y -= c.invMassA * py;
             b[k].x += c.invMassB * px;
@@ -387,12 +389,12 @@ template <std::size_t N>
 // smallest: a vector result handed back from an AVX-512 function let GCC place a 256-bit
 // instruction after the function's closing vzeroupper, and the plain SSE code after it ran up to
 // 2.7 times slower for the rest of the step.
-__attribute__((target_clones("avx2", "default"))) void solvePositionBatchesOneByOne(std::span<const PositionBatch> batches,
+__attribute__((target_clones("avx2", "default"))) void solvePositionBatchesOneByOne(std::span<PositionBatch> batches,
                                                                                    std::span<BatchPose> poses,
                                                                                    Lanes& deepest)
 {
-    for (const PositionBatch& c : batches) {
-        const PositionBatch* const one[1] = {&c};
+    for (PositionBatch& c : batches) {
+        PositionBatch* const one[1] = {&c};
         correctTogether<1>(one, poses, deepest);
     }
 }
@@ -400,7 +402,7 @@ __attribute__((target_clones("avx2", "default"))) void solvePositionBatchesOneBy
 // Each lane keeps the smallest separation it meets, so the order in which the pairs' two batches
 // are met does not matter.
 __attribute__((target("arch=x86-64-v4,prefer-vector-width=256"))) void
-solvePositionBatchesInPairs(std::span<const PositionBatch> batches, std::span<BatchPose> poses, Lanes& deepest)
+solvePositionBatchesInPairs(std::span<PositionBatch> batches, std::span<BatchPose> poses, Lanes& deepest)
 {
     assert(batches.size() % kBatchPair == 0);
     for (std::size_t first = 0; first < batches.size(); first += kBatchPair) {
@@ -412,12 +414,12 @@ solvePositionBatchesInPairs(std::span<const PositionBatch> batches, std::span<Ba
             for (std::size_t offset = 0; offset < kBatchPair * sizeof(PositionBatch); offset += kCacheLine)
                 __builtin_prefetch(next + offset);
         }
-        const PositionBatch* const pair[kBatchPair] = {&batches[first], &batches[first + 1]};
+        PositionBatch* const pair[kBatchPair] = {&batches[first], &batches[first + 1]};
         correctTogether<kBatchPair>(pair, poses, deepest);
     }
 }
 
-Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses, BatchOrder order)
+Scalar solvePositionBatches(std::span<PositionBatch> batches, std::span<BatchPose> poses, BatchOrder order)
 {
     Lanes deepest{};
     order == BatchOrder::InPairs ? solvePositionBatchesInPairs(batches, poses, deepest)

@@ -107,6 +107,11 @@ struct PositionBatch {
     };
     std::array<Anchors, 2> anchors{};
     LaneMask secondPoint{}; ///< the lane's contact has a second point
+    /// The linear position impulse the passes of this substep have applied, summed over its
+    /// points, m·kg: what ContactSolver::measurePushes reads. Cleared by packLane and
+    /// ContactSolver::beginPositions.
+    Lanes pushX{};
+    Lanes pushY{};
     /// Each lane's bodies, as indices into the poses; a fixed body writes to a scratch pose.
     std::array<std::uint32_t, kBatchLanes> readA{};
     std::array<std::uint32_t, kBatchLanes> readB{};
@@ -141,7 +146,7 @@ void solveBatches(std::span<ContactBatch> batches, BatchOrder order = fastestBat
 /// does for one contact: each point's separation is pushed towards −slop by moving the two bodies
 /// along the normal, in proportion to their inverse masses. Returns the deepest separation seen
 /// (≤ 0), m. InPairs asks of the batches what it asks in solveBatches.
-Scalar solvePositionBatches(std::span<const PositionBatch> batches, std::span<BatchPose> poses,
+Scalar solvePositionBatches(std::span<PositionBatch> batches, std::span<BatchPose> poses,
                             BatchOrder order = fastestBatchOrder());
 
 } // namespace impetus::controller

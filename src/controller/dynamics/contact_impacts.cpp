@@ -148,7 +148,10 @@ std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<cons
 int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
 {
     m_impulseTimeline.clear();
+    m_struckBodies.clear();
     m_lastTimedImpulse.assign(bodies.size(), kNoImpulse);
+    m_impactFrictionWork = 0;
+    m_impactNormalWork = 0;
     const std::size_t totalPoints = m_preparedPoints[0] + m_preparedPoints[1] + m_preparedPoints[2];
     const std::size_t maxImpacts = totalPoints * static_cast<std::size_t>(constants::kMaxImpactsPerPoint);
 
@@ -220,19 +223,30 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         };
         std::array<ImpactPoint, 2> points{};
         int count = 0;
+        // One time for the whole impact: the first of its points to meet (a two-point impact is
+        // one simultaneous collision), and never before an impact either body has already taken
+        // this step. Each body's impulses then come in the order of their times, so the place
+        // each acts from (positionAt) already holds every impulse before it, and angular momentum
+        // stays exact however the impacts were ordered (fastest approach first).
+        Scalar tau = 1;
         for (int i = 0; i < c.pointCount; ++i) {
             const auto ui = static_cast<std::size_t>(i);
-            const ContactConstraintPoint& p = c.points[ui];
-            const Approach ap = approachOf(c, p, bodies, h);
+            const Approach ap = approachOf(c, c.points[ui], bodies, h);
             if (ap.tau < 0)
                 continue;
-            const Vec2 centreA = positionAt(c.bodyA, a, ap.tau, h);
-            const Vec2 centreB = positionAt(c.bodyB, b, ap.tau, h);
-            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
             ImpactPoint& ip = points[static_cast<std::size_t>(count++)];
             ip.index = ui;
-            ip.tau = ap.tau;
             ip.velocity = ap.velocity;
+            tau = std::min(tau, ap.tau);
+        }
+        tau = std::max({tau, a.lastImpactTau, b.lastImpactTau});
+        const Vec2 centreA = positionAt(c.bodyA, a, tau, h);
+        const Vec2 centreB = positionAt(c.bodyB, b, tau, h);
+        for (int i = 0; i < count; ++i) {
+            ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const ContactConstraintPoint& p = c.points[ip.index];
+            const Vec2 common = 0.5 * (centreA + p.rA + centreB + p.rB);
+            ip.tau = tau;
             ip.rA = common - centreA;
             ip.rB = common - centreB;
         }
@@ -264,6 +278,34 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         const Eigen::Vector2d x = solveTwoPointLcp(k, count == 2 ? Eigen::Matrix2d(k.inverse()) : k, bias, count);
 
         const Vec2 t = tangentOf(c.normal);
+        // The collision inspector's record (none in a normal step): the state before the impulses.
+        ImpactRecord* record = nullptr;
+        if (m_impactLog != nullptr) {
+            record = &m_impactLog->emplace_back();
+            record->ownerA = c.ownerA;
+            record->ownerB = c.ownerB;
+            record->normal = c.normal;
+            record->tangent = t;
+            record->restitution = c.restitution;
+            record->friction = c.friction;
+            record->count = count;
+            record->beforeA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->beforeB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
+            for (int i = 0; i < count; ++i) {
+                const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+                ImpactPointRecord& rp = record->points[static_cast<std::size_t>(i)];
+                rp = {ip.rA, ip.rB, ip.tau, ip.velocity, ip.velocity - bias(i), x(i)};
+                for (int j = 0; j < count; ++j)
+                    record->k[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = k(i, j);
+            }
+        }
+        // For the energy ledger: the relative normal velocities on the start-of-step velocities
+        // before the impulses (see the sum after them).
+        std::array<Scalar, 2> normalBefore{};
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            normalBefore[static_cast<std::size_t>(i)] = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal);
+        }
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             ContactConstraintPoint& p = c.points[ip.index];
@@ -278,18 +320,50 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                 m_records[best].touching = true;
         }
 
+        if (record != nullptr) {
+            record->afterNormalA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->afterNormalB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
+        }
+        // The impulses x change the kinetic energy at the time of impact by Σ x·(u⁻ + u⁺)/2, with
+        // u⁻ the approach velocity then and u⁺ = u⁻ + the change the impulses made.
+        for (int i = 0; m_measureImpactWork && i < count; ++i) {
+            const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
+            const Scalar change = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) -
+                                  normalBefore[static_cast<std::size_t>(i)];
+            m_impactNormalWork += x(i) * (ip.velocity + 0.5 * change);
+        }
+
         // Coulomb friction during the impact: stop the sliding at each point, within μ·jn.
         for (int i = 0; i < count; ++i) {
             const ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const Scalar vt = relativeVelocity(a, b, ip.rA, ip.rB).dot(t);
             const Scalar limit = c.friction * x(i);
-            const Scalar jt = std::clamp(-vt * effectiveMass(a, b, ip.rA, ip.rB, t), -limit, limit);
+            const Scalar tangentMass = effectiveMass(a, b, ip.rA, ip.rB, t);
+            const Scalar jt = std::clamp(-vt * tangentMass, -limit, limit);
             applyImpactImpulse(c, ip.rA, ip.rB, ip.tau, jt * t, bodies);
+            if (record != nullptr) {
+                ImpactPointRecord& rp = record->points[static_cast<std::size_t>(i)];
+                rp.tangentSpeed = vt;
+                rp.tangentMass = tangentMass;
+                rp.frictionLimit = limit;
+                rp.frictionImpulse = jt;
+            }
+            // For the energy ledger: one impulse along t changes the kinetic energy by exactly
+            // jt·(vt before + vt after)/2.
+            if (m_measureImpactWork)
+                m_impactFrictionWork += 0.5 * jt * (vt + relativeVelocity(a, b, ip.rA, ip.rB).dot(t));
+        }
+        if (record != nullptr) {
+            record->afterA = {a.invMass, a.invInertia, a.velocity, a.angularVelocity};
+            record->afterB = {b.invMass, b.invInertia, b.velocity, b.angularVelocity};
         }
         // Only a body that can move has been struck (a fixed body's contacts keep their status).
-        for (SolverBody* body : {&a, &b}) {
-            if (movable(*body))
-                body->hadImpact = true;
+        for (const std::uint32_t index : {c.bodyA, c.bodyB}) {
+            SolverBody& body = bodies[index];
+            if (movable(body) && !body.hadImpact) {
+                body.hadImpact = true;
+                m_struckBodies.push_back(index);
+            }
         }
 
         // Everything touching a body that just changed velocity may now approach (or stop).
@@ -304,7 +378,45 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             }
         }
     }
+    if (resolved > 0)
+        moveArmsToImpactTimes(bodies, h);
     return resolved;
+}
+
+void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h)
+{
+    // A struck body's contact impulses act after its last impact (Simulation::finishBodyPosition),
+    // so their lever arms are taken from where it is then. Both bodies of a contact then push at
+    // one point in space, each at its own time, which keeps the angular momentum about any point
+    // to rounding (docs/physics.md, "Conservation"). The arms move by how far the body travelled
+    // before the impact, millimetres: the contact's geometry is otherwise the start's.
+    // Only the struck bodies' contacts are visited (a pile with one impact has thousands of
+    // others); a contact between two struck bodies is done from its body A.
+    for (const std::uint32_t i : m_struckBodies)
+        bodies[i].impulseOrigin = positionAt(i, bodies[i], bodies[i].lastImpactTau, h);
+    for (const std::uint32_t struck : m_struckBodies) {
+        for (std::uint32_t at = m_bodyConstraintStart[struck]; at < m_bodyConstraintStart[struck + 1]; ++at) {
+            const std::uint32_t ci = m_bodyConstraints[at];
+            ContactConstraint& c = m_constraints[ci];
+            const SolverBody& a = bodies[c.bodyA];
+            const SolverBody& b = bodies[c.bodyB];
+            if (a.hadImpact && b.hadImpact && struck != c.bodyA)
+                continue;
+            const Vec2 t = tangentOf(c.normal);
+            const Vec2 originA = impulseOrigin(a);
+            const Vec2 originB = impulseOrigin(b);
+            for (std::size_t k = 0; k < static_cast<std::size_t>(c.pointCount); ++k) {
+                ContactConstraintPoint& p = c.points[k];
+                const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
+                p.rA = common - originA;
+                p.rB = common - originB;
+                p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
+                p.tangentMass = effectiveMass(a, b, p.rA, p.rB, t);
+            }
+            if (m_batched)
+                packLane(bodies, h, groupOfLane(m_laneOf[ci]), m_laneOf[ci]);
+        }
+    }
 }
 
 Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const
@@ -323,14 +435,21 @@ void ContactSolver::applyImpactImpulse(const ContactConstraint& c, const Vec2& r
     SolverBody& a = bodies[c.bodyA];
     SolverBody& b = bodies[c.bodyB];
     applyImpulse(a, b, rA, rB, impulse);
-    a.firstImpactTau = std::min(a.firstImpactTau, tau);
-    b.firstImpactTau = std::min(b.firstImpactTau, tau);
     const Vec2 dvA = -a.invMass * impulse;
     const Vec2 dvB = b.invMass * impulse;
+    const Scalar dwA = -a.invInertia * cross(rA, impulse);
+    const Scalar dwB = b.invInertia * cross(rB, impulse);
+    for (auto [body, dv, dw] : {std::tuple{&a, dvA, dwA}, std::tuple{&b, dvB, dwB}}) {
+        if (!movable(*body))
+            continue; // a fixed body's motion never changes: its impacts keep no time
+        body->lastImpactTau = std::max(body->lastImpactTau, tau);
+        body->impactVelocity += dv;
+        body->impactAngularVelocity += dw;
+    }
     a.impactLateVelocity += tau * dvA;
-    a.impactLateAngularVelocity -= tau * a.invInertia * cross(rA, impulse);
+    a.impactLateAngularVelocity += tau * dwA;
     b.impactLateVelocity += tau * dvB;
-    b.impactLateAngularVelocity += tau * b.invInertia * cross(rB, impulse);
+    b.impactLateAngularVelocity += tau * dwB;
     for (const auto& [body, dv] : {std::pair{c.bodyA, dvA}, std::pair{c.bodyB, dvB}}) {
         if (!movable(bodies[body]))
             continue; // a fixed body's motion never changes: nothing to remember

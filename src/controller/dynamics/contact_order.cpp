@@ -268,6 +268,8 @@ void ContactSolver::packLane(std::span<SolverBody> bodies, Scalar h, std::size_t
     positions.localNormalX[lane] = localNormal.x();
     positions.localNormalY[lane] = localNormal.y();
     positions.secondPoint[lane] = two ? -1 : 0;
+    positions.pushX[lane] = 0;
+    positions.pushY[lane] = 0;
     for (std::size_t i = 0; i < 2; ++i) {
         const ContactConstraintPoint* p = c && i < static_cast<std::size_t>(c->pointCount) ? &c->points[i] : nullptr;
         const ContactConstraintPoint none;

@@ -16,8 +16,9 @@ namespace {
 
 /// One non-linear Gauss–Seidel update of one constraint's positions. `rotations` holds every
 /// body's cos and sin of its current angle, kept up to date here when a body turns. Returns the
-/// deepest separation it saw (≤ 0), m.
-Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies, std::span<Vec2> rotations)
+/// deepest separation it saw (≤ 0), m. Adds the linear position impulse it applied to `push`.
+Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies, std::span<Vec2> rotations,
+                               Vec2& push)
 {
     Scalar deepest = 0;
     SolverBody& a = bodies[c.bodyA];
@@ -44,7 +45,9 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
         const Vec2 rA = mid - a.position;
         const Vec2 rB = mid - b.position;
         const Scalar mass = effectiveMass(a, b, rA, rB, n);
-        applyPositionImpulse(a, b, rA, rB, Vec2((-correction * mass) * n));
+        const Vec2 impulse = (-correction * mass) * n;
+        applyPositionImpulse(a, b, rA, rB, impulse);
+        push += impulse;
         // A resting point within the slop moves nothing: the sine and cosine are computed again
         // only for a body that turned, not at every look.
         if (movable(a))
@@ -56,6 +59,53 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
 }
 
 } // namespace
+
+void ContactSolver::beginPositions()
+{
+    if (!m_batched) {
+        m_pushes.assign(m_constraints.size(), Vec2::Zero());
+        return;
+    }
+    for (PositionBatch& batch : m_positionBatches) {
+        batch.pushX = Lanes{};
+        batch.pushY = Lanes{};
+    }
+}
+
+void ContactSolver::measurePushes(std::span<const SolverBody> bodies)
+{
+    // What each contact's position passes changed in the angular momentum, from the velocities
+    // they saw: all are measured before any is answered (takeBackPushes).
+    m_pushedPairs.clear();
+    const auto look = [&](std::uint32_t ci, const Vec2& push) {
+        if (push.isZero())
+            return;
+        const SolverBody& a = bodies[m_constraints[ci].bodyA];
+        const SolverBody& b = bodies[m_constraints[ci].bodyB];
+        if (a.invMass > 0 && b.invMass > 0)
+            m_pushedPairs.push_back({m_constraints[ci].bodyA, m_constraints[ci].bodyB,
+                                     cross(push, Vec2(b.velocity - a.velocity)), push});
+    };
+    if (!m_batched) {
+        for (std::uint32_t ci = 0; ci < m_pushes.size(); ++ci)
+            look(ci, m_pushes[ci]);
+    } else {
+        for (std::size_t bi = 0; bi < m_positionBatches.size(); ++bi) {
+            const PositionBatch& batch = m_positionBatches[bi];
+            for (std::size_t lane = 0; lane < static_cast<std::size_t>(kBatchLanes); ++lane) {
+                const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + lane];
+                if (ci != kNoConstraint)
+                    look(ci, Vec2(batch.pushX[static_cast<int>(lane)], batch.pushY[static_cast<int>(lane)]));
+            }
+        }
+    }
+}
+
+void ContactSolver::takeBackPushes(std::span<SolverBody> bodies) const
+{
+    for (const PushedPair& pair : m_pushedPairs)
+        restoreAngularMomentum(bodies[pair.bodyA], bodies[pair.bodyB], pair.change, pair.push);
+}
 
 bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere)
 {
@@ -72,7 +122,7 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElse
     forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
         Scalar groupDeepest = 0;
         for (const std::uint32_t ci : group)
-            groupDeepest = std::min(groupDeepest, solvePositionConstraint(m_constraints[ci], bodies, m_rotations));
+            groupDeepest = std::min(groupDeepest, solvePositionConstraint(m_constraints[ci], bodies, m_rotations, m_pushes[ci]));
         deepest[static_cast<std::size_t>(index)] = groupDeepest;
     });
     // Allow a little more than the slop before calling it solved, as the iterations converge
@@ -98,7 +148,7 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
     std::array<Scalar, 3> deepest{};
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
-        deepest[ug] = solvePositionBatches(std::span<const PositionBatch>(m_positionBatches)
+        deepest[ug] = solvePositionBatches(std::span<PositionBatch>(m_positionBatches)
                                                .subspan(m_batchGroupStart[ug], m_batchGroupStart[ug + 1] - m_batchGroupStart[ug]),
                                            m_poses);
     });

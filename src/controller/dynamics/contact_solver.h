@@ -15,6 +15,7 @@
 
 #include "controller/collision/collision_types.h"
 #include "controller/dynamics/contact_batches.h"
+#include "controller/dynamics/impact_record.h"
 #include "controller/integration/force_model.h"
 #include "controller/dynamics/solver_body.h"
 #include "controller/task_pair.h"
@@ -156,6 +157,9 @@ public:
     /// (contact_batches.h); constants::kBatchMinConstraints unless set. Tests set 0 to batch every
     /// world, or SIZE_MAX to batch none.
     void setBatchMinConstraints(std::size_t count) { m_batchMinConstraints = count; }
+    /// Appends a record of every impact solveImpacts() resolves to `log` (impact_record.h), or
+    /// records nothing (nullptr, the default). The caller keeps `log` alive.
+    void setImpactLog(std::vector<ImpactRecord>* log) { m_impactLog = log; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
     /// Starts the velocity passes: packs the constraints for them (unless prepare() has put them
@@ -180,10 +184,32 @@ public:
     /// since this solver's last pass (the first pass of a step, or joints in between). Returns
     /// true when every penetration is within the slop.
     bool solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere);
+    /// Before a substep's position passes: clears what they will have pushed.
+    void beginPositions();
+    /// After them: measures, contact by contact, what their moving the bodies did to the angular
+    /// momentum, P × (v_B − v_A). Contacts with a fixed body are left alone.
+    void measurePushes(std::span<const SolverBody> bodies);
+    /// Then takes each back by turning the pushed pair's relative velocity
+    /// (restoreAngularMomentum; docs/physics.md, "Conservation").
+    void takeBackPushes(std::span<SolverBody> bodies) const;
 
     /// The constraints of this step, with their impact impulses. Their normal and tangent impulses
     /// are the warm start's: the passes' final ones are in the records (swapRecords).
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
+
+    /// This step's contact records so far (see swapRecords): after finishVelocities, the passes'
+    /// final impulses, one record per constraint in the same order.
+    const std::vector<model::ContactRecord>& records() const { return m_records; }
+
+    /// Whether solveImpacts sums the work of its impulses (for the energy ledger; off unless a
+    /// ledger is attached).
+    void measureImpactWork(bool on) { m_measureImpactWork = on; }
+    /// The work of the normal impulses of the last solveImpacts at their times of impact,
+    /// Σ j·(u⁻ + u⁺)/2 with u the relative normal velocity just before and after (≤ 0: e < 1
+    /// loses ½(1 − e²) of the approach energy), J; 0 when not measured.
+    Scalar impactNormalWork() const { return m_impactNormalWork; }
+    /// The work of friction during the last solveImpacts, Σ jₜ·(vₜ⁻ + vₜ⁺)/2 (≤ 0), J; 0 when not measured.
+    Scalar impactFrictionWork() const { return m_impactFrictionWork; }
 
 
 private:
@@ -265,12 +291,42 @@ private:
     /// Where body `index` is at τ·h, moving straight with its velocity and the impacts so far.
     Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
 
+    /// After the impacts: each struck body's impulse origin (its place at its last impact), and
+    /// the lever arms of every contact of a struck body taken from there (repacked into its batch
+    /// lane in a batched step).
+    void moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h);
+    /// The group whose batches hold lane `laneIndex`.
+    std::size_t groupOfLane(std::uint32_t laneIndex) const
+    {
+        const std::size_t batch = laneIndex / kBatchLanes;
+        std::size_t g = 0;
+        while (g + 1 < m_groups.size() && batch >= m_batchGroupStart[g + 1])
+            ++g;
+        return g;
+    }
+
     /// Applies an impact impulse (−impulse on A at rA, +impulse on B at rB) at time τ·h and
     /// records it for the bodies' positions at later times.
     void applyImpactImpulse(const ContactConstraint& c, const Vec2& rA, const Vec2& rB, Scalar tau,
                             const Vec2& impulse, std::span<SolverBody> bodies);
 
+    /// A pair the position passes pushed, and the angular momentum that changed, kg·m²/s.
+    struct PushedPair {
+        std::uint32_t bodyA;
+        std::uint32_t bodyB;
+        Scalar change;
+        Vec2 push; ///< the linear position impulse on B, m·kg
+    };
+    /// An unbatched step's linear position impulse per constraint, summed over its points and the
+    /// passes, m·kg (a batched step keeps them in its position batches).
+    std::vector<Vec2> m_pushes;
+    std::vector<PushedPair> m_pushedPairs; ///< measurePushes's findings
+
+    std::vector<std::uint32_t> m_struckBodies; ///< the bodies this step's impacts struck, once each
     std::vector<ContactConstraint> m_constraints;
+    bool m_measureImpactWork = false; ///< see measureImpactWork
+    Scalar m_impactNormalWork = 0; ///< see impactNormalWork, J
+    Scalar m_impactFrictionWork = 0; ///< see impactFrictionWork, J
     /// This step's contact records (see swapRecords), begun while each constraint is built and
     /// finished from the batches, so the constraints need not be read again.
     std::vector<model::ContactRecord> m_records;
@@ -304,6 +360,7 @@ private:
 
     static constexpr std::uint32_t kNoConstraint = UINT32_MAX; ///< a padding lane
     std::size_t m_batchMinConstraints = constants::kBatchMinConstraints;
+    std::vector<ImpactRecord>* m_impactLog = nullptr; ///< setImpactLog(); null: no records
     bool m_batched = false; ///< this step's velocity passes run in batches
     std::vector<ContactBatch> m_batches; ///< group 0's, then group 1's, then group 2's
     std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint

@@ -11,16 +11,34 @@ namespace impetus::controller {
 
 namespace {
 
-/// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix).
-Eigen::Matrix2d pointK(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB)
+/// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix), each
+/// body's part weighted by how much of its velocity moves it (shareA, shareB; 1 for the position
+/// passes).
+Eigen::Matrix2d pointK(const SolverBody& a, const SolverBody& b, const Vec2& rA, const Vec2& rB, Scalar shareA = 1,
+                       Scalar shareB = 1)
 {
-    const Scalar m = a.invMass + b.invMass;
-    Eigen::Matrix2d k;
-    k(0, 0) = m + a.invInertia * rA.y() * rA.y() + b.invInertia * rB.y() * rB.y();
-    k(0, 1) = -a.invInertia * rA.x() * rA.y() - b.invInertia * rB.x() * rB.y();
-    k(1, 0) = k(0, 1);
-    k(1, 1) = m + a.invInertia * rA.x() * rA.x() + b.invInertia * rB.x() * rB.x();
-    return k;
+    const auto part = [](const SolverBody& body, const Vec2& r, Scalar share) {
+        Eigen::Matrix2d k;
+        k(0, 0) = body.invMass + body.invInertia * r.y() * r.y();
+        k(0, 1) = -body.invInertia * r.x() * r.y();
+        k(1, 0) = k(0, 1);
+        k(1, 1) = body.invMass + body.invInertia * r.x() * r.x();
+        return Eigen::Matrix2d(share * k);
+    };
+    return part(a, rA, shareA) + part(b, rB, shareB);
+}
+
+/// How far a body's point at r moves this step apart from (1 − T)·h times its end velocity: a
+/// struck body moves h·(T·v − Σₖ τₖ·Δvₖ) more, with v its velocity after the impacts (v₀ + Σ Δvₖ),
+/// and turns likewise (Simulation::finishBodyPosition).
+Vec2 impactShift(const SolverBody& body, const Vec2& r, Scalar h)
+{
+    if (!body.hadImpact)
+        return Vec2::Zero();
+    const Scalar tau = body.lastImpactTau;
+    const Vec2 move = h * (tau * body.velocity - body.impactLateVelocity);
+    const Scalar turn = h * (tau * body.angularVelocity - body.impactLateAngularVelocity);
+    return move + cross(turn, r);
 }
 
 Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
@@ -44,7 +62,7 @@ SolverBody& JointSolver::bodyOf(std::span<SolverBody> bodies, std::uint32_t inde
     return index == kWorld ? m_world : bodies[index];
 }
 
-void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies)
+void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies, Scalar h)
 {
     m_joints.clear();
     m_world = SolverBody{};
@@ -62,17 +80,34 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         c.rA = rotate(c.localA, a.angle);
         c.rB = rotate(c.localB, b.angle);
         c.offset = b.position + c.rB - a.position - c.rA;
+        // Impulses act from where each body is when they act: at the start, or after a struck
+        // body's last impact (SolverBody::impulseOrigin).
+        const Vec2& originA = impulseOrigin(a);
+        const Vec2& originB = impulseOrigin(b);
+        // A struck body's end velocity moves it only after its last impact, and its motion
+        // before counts apart (review point of issue 16: the target ignored it).
+        c.shareA = a.hadImpact ? 1 - a.lastImpactTau : 1;
+        c.shareB = b.hadImpact ? 1 - b.lastImpactTau : 1;
+        c.shift = impactShift(b, c.rB, h) - impactShift(a, c.rA, h);
         if (c.type == model::JointType::Pin) {
-            c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB));
+            if (c.bodyB != kWorld) {
+                const Vec2 common = 0.5 * (originA + c.rA + originB + c.rB);
+                c.rA = common - originA;
+                c.rB = common - originB;
+            }
+            c.pinMass = safeInverse(pointK(a, b, c.rA, c.rB, c.shareA, c.shareB));
         } else {
-            const Vec2 d = b.position + c.rB - a.position - c.rA;
+            // Along the line between the anchors as the impulses see them, which keeps the
+            // angular momentum exactly.
+            const Vec2 d = originB + c.rB - originA - c.rA;
             const Scalar distance = d.norm();
             // A rod squeezed to a point has no direction this instant; push along x until it
             // opens up again.
             c.axis = distance > 0 ? Vec2(d / distance) : Vec2(1, 0);
             const Scalar rnA = cross(c.rA, c.axis);
             const Scalar rnB = cross(c.rB, c.axis);
-            const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+            const Scalar k = c.shareA * (a.invMass + a.invInertia * rnA * rnA) +
+                             c.shareB * (b.invMass + b.invInertia * rnB * rnB);
             c.rodMass = k > 0 ? 1 / k : 0;
         }
         m_joints.push_back(c);
@@ -100,8 +135,9 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
     for (Constraint& c : m_joints) {
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
-        const Vec2 dv = relativeVelocity(a, b, c.rA, c.rB);
-        const Vec2 predicted = c.offset + h * dv;
+        const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
+                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA));
+        const Vec2 predicted = c.offset + c.shift + h * dv;
         if (c.type == model::JointType::Pin) {
             const Vec2 impulse = -(c.pinMass * Vec2(predicted / h));
             c.impulse += impulse;
@@ -114,10 +150,43 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
     }
 }
 
+void JointSolver::beginPositions()
+{
+    for (Constraint& c : m_joints)
+        c.push = Vec2::Zero();
+}
+
+void JointSolver::measurePushes(std::span<const SolverBody> bodies)
+{
+    m_changes.clear();
+    for (const Constraint& c : m_joints) {
+        if (c.bodyB == kWorld || c.push.isZero())
+            continue;
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = bodies[c.bodyB];
+        if (a.invMass > 0 && b.invMass > 0)
+            m_changes.push_back(cross(c.push, Vec2(b.velocity - a.velocity)));
+        else
+            m_changes.push_back(0);
+    }
+}
+
+void JointSolver::takeBackPushes(std::span<SolverBody> bodies) const
+{
+    std::size_t next = 0;
+    for (const Constraint& c : m_joints) {
+        if (c.bodyB == kWorld || c.push.isZero())
+            continue;
+        const Scalar change = m_changes[next++];
+        if (change != 0)
+            restoreAngularMomentum(bodies[c.bodyA], bodies[c.bodyB], change, c.push);
+    }
+}
+
 bool JointSolver::solvePositions(std::span<SolverBody> bodies)
 {
     Scalar worst = 0;
-    for (const Constraint& c : m_joints) {
+    for (Constraint& c : m_joints) {
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
         const Vec2 rA = rotate(c.localA, a.angle);
@@ -131,6 +200,7 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
                 error *= constants::kMaxPositionCorrection / size;
             const Vec2 impulse = -(safeInverse(pointK(a, b, rA, rB)) * error);
             applyPositionImpulse(a, b, rA, rB, impulse);
+            c.push += impulse;
         } else {
             const Scalar distance = d.norm();
             if (!(distance > 0))
@@ -142,8 +212,11 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
             const Scalar rnA = cross(rA, u);
             const Scalar rnB = cross(rB, u);
             const Scalar k = a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
-            if (k > 0)
-                applyPositionImpulse(a, b, rA, rB, Vec2((-error / k) * u));
+            if (k > 0) {
+                const Vec2 impulse = (-error / k) * u;
+                applyPositionImpulse(a, b, rA, rB, impulse);
+                c.push += impulse;
+            }
         }
     }
     return worst <= constants::kLinearSlop;

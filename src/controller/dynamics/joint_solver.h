@@ -22,8 +22,10 @@ namespace impetus::controller {
 class JointSolver {
 public:
     /// Builds the constraints from the world's joints at the bodies' current poses, warm-starting
-    /// from each joint's stored impulse.
-    void prepare(const model::World& world, std::span<const SolverBody> bodies);
+    /// from each joint's stored impulse, for a step of h seconds. Called after the impacts: a
+    /// struck body's joints act from where it is after its last impact and aim at where the step
+    /// will really leave it.
+    void prepare(const model::World& world, std::span<const SolverBody> bodies, Scalar h);
 
     /// Applies the stored impulses.
     void warmStart(std::span<SolverBody> bodies);
@@ -33,6 +35,13 @@ public:
 
     /// One position pass. Returns true when every joint is within kLinearSlop of exact.
     bool solvePositions(std::span<SolverBody> bodies);
+    /// Before a substep's position passes: clears what they will have pushed.
+    void beginPositions();
+    /// After them: measures what their moving two bodies did to the angular momentum, and then
+    /// takes it back, as ContactSolver::measurePushes and takeBackPushes do. Joints to the world
+    /// are left alone.
+    void measurePushes(std::span<const SolverBody> bodies);
+    void takeBackPushes(std::span<SolverBody> bodies) const;
 
     /// Copies the accumulated impulses back into the world's joints (for warm starting).
     void storeImpulses(model::World& world) const;
@@ -48,8 +57,19 @@ private:
         std::uint32_t bodyB = kWorld;
         Vec2 localA = Vec2::Zero(); ///< anchor in A's frame
         Vec2 localB = Vec2::Zero(); ///< anchor in B's frame, or the world point
+        /// The lever arms of the velocity impulses, m. A pin between two bodies takes both to one
+        /// point, half-way between its anchors, each from the body's impulse origin: its impulses
+        /// then keep the angular momentum exactly (docs/physics.md, "Conservation").
         Vec2 rA = Vec2::Zero();
         Vec2 rB = Vec2::Zero();
+        Vec2 push = Vec2::Zero(); ///< linear position impulse of this substep's position passes, m·kg
+        /// How much of each body's end velocity moves it this step: 1 − T, with T·h its last
+        /// impact (Simulation::finishBodyPosition); 1 for a body without impacts.
+        Scalar shareA = 1;
+        Scalar shareB = 1;
+        /// Where the anchors' separation at the end of the step goes apart from what the end
+        /// velocities bring: the struck bodies' motion before and during their impacts, m.
+        Vec2 shift = Vec2::Zero();
         Vec2 offset = Vec2::Zero(); ///< p_B − p_A at the start of the step, m
         Scalar length = 0; ///< rod length, m
         Vec2 axis = Vec2::Zero(); ///< rod: unit vector from A's anchor to B's
@@ -61,6 +81,7 @@ private:
     SolverBody& bodyOf(std::span<SolverBody> bodies, std::uint32_t index);
 
     std::vector<Constraint> m_joints;
+    std::vector<Scalar> m_changes; ///< measurePushes's findings, kg·m²/s
     SolverBody m_world; ///< the fixed world: zero inverse mass, at the origin, never moves
 };
 
