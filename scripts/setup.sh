@@ -14,6 +14,12 @@ IMPETUS_PACKAGES=(
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 qt6-l10n-tools qt6-tools-dev fonts-dejavu-core
 )
 
+# What scripts/fuzz needs besides the engine's build tools and libraries: clang 14 and its
+# libFuzzer. Not part of IMPETUS_PACKAGES: neither the app nor the test suite needs them.
+IMPETUS_FUZZ_PACKAGES=(
+  cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev clang-14 libfuzzer-14-dev
+)
+
 impetus_install_packages() {
   local missing=()
   local pkg

@@ -48,6 +48,23 @@ int solverSubsteps(Scalar h, Scalar maxSubstep)
     return std::max(1, static_cast<int>(std::ceil(ratio)));
 }
 
+int dragSubsteps(const model::World& world, Scalar h)
+{
+    if (!(world.settings.drag > 0) || !(h > 0))
+        return 1;
+    // The fastest drag rate is the lightest dynamic body's (a soft body's ellipses share its
+    // rate: each takes its mass's share of the drag).
+    Scalar largestInvMass = 0;
+    for (const model::Body& body : world.bodies) {
+        if (!body.fixed)
+            largestInvMass = std::max(largestInvMass, body.invMass);
+    }
+    const Scalar ratio = world.settings.drag * largestInvMass * h / constants::kMaxDragRateStep;
+    if (!(ratio < constants::kMaxSolverSubsteps))
+        return constants::kMaxSolverSubsteps;
+    return std::max(1, static_cast<int>(std::ceil(ratio)));
+}
+
 Simulation::Simulation(SolverSettings settings)
     : m_settings(settings)
     , m_euler(makeIntegrator(model::IntegratorKind::Euler))
@@ -477,11 +494,13 @@ int Simulation::substepsFor(model::World& world, bool& collided)
     collided = false;
     const Scalar h = world.settings.timeStep;
     const int split = solverSubsteps(h, m_settings.maxSubstep);
+    // What the integrators need to stay stable, contacts or not.
+    const int stable = std::max(m_stability.substeps, dragSubsteps(world, h));
     // Joints always need the split, and so does a world that ended its last step with contacts
     // (a pile, a resting box): it is split without first looking for this step's contacts, which
     // would cost a collision pass that the substeps then do again.
     if (split == 1 || !world.joints.empty() || !world.softBodies.empty() || !world.contacts.empty())
-        return std::max(m_stability.substeps, split);
+        return std::max(stable, split);
     // Whether this step has contacts: found with the whole step's margins, which cover everything
     // that can touch within it. A world in free flight (a projectile, an oscillator) is then
     // integrated over the step the user chose, so that a lesson on integrators sees their error
@@ -490,7 +509,7 @@ int Simulation::substepsFor(model::World& world, bool& collided)
     collided = true;
     const bool contacts = std::any_of(m_manifolds.begin(), m_manifolds.end(),
                                       [](const ContactSolver::PairManifold& pm) { return pm.manifold.count > 0; });
-    return contacts ? split : 1;
+    return std::max(stable, contacts ? split : 1);
 }
 
 void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endTime, Contacts contacts,

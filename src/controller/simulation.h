@@ -64,6 +64,11 @@ struct SolverSettings {
 /// against 1/60, is not split again), and at most constants::kMaxSolverSubsteps.
 int solverSubsteps(Scalar h, Scalar maxSubstep);
 
+/// The equal substeps a step of h seconds needs so that Stokes drag stays stable on every dynamic
+/// body: γ·(h / substeps) ≤ constants::kMaxDragRateStep with γ = drag / m the body's drag rate;
+/// 1 without drag, at most constants::kMaxSolverSubsteps.
+int dragSubsteps(const model::World& world, Scalar h);
+
 /// How far the fastest movable body of `world` travels in h seconds at its present speed, m: its
 /// speed plus its spin times its bounding radius, times h.
 Scalar fastestTravel(const model::World& world, Scalar h);
@@ -71,8 +76,9 @@ Scalar fastestTravel(const model::World& world, Scalar h);
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built
 /// into grids on the first step that needs them (prepareSoftBodies). A step is split into equal
 /// substeps when it is longer than the solver's longest step (solverSubsteps) and has contacts or
-/// joints to solve, or when a grid is too stiff for the integrator at the world's step
-/// (softStability), whichever needs more.
+/// joints to solve, when a grid is too stiff for the integrator at the world's step
+/// (softStability), or when drag would make a light body's velocity blow up (dragSubsteps),
+/// whichever needs more.
 /// Each substep runs every phase below. Holds only scratch state (buffers, the broad phase's
 /// sort order), so one Simulation can step any world; the world itself carries everything
 /// physical, including the contact impulses that warm-start the next step.

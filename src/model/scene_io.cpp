@@ -13,11 +13,13 @@
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <new>
 #include <random>
 #include <span>
+#include <sstream>
 #include <system_error>
 #include <utility>
 
@@ -834,7 +836,50 @@ private:
                              " kg·m²): the size or density is too extreme to simulate");
             return false;
         }
+        if (body.soft && !checkSoftGridSize(body, memberPath(path, "soft")))
+            return false;
         return true;
+    }
+
+    /// Refuses a soft body whose grid would have more than kMaxSoftGridCells cells. The grid
+    /// builder lays a lattice of density n over the shape's bounding box, about w·h·n cells;
+    /// far beyond the cap that count no longer fits its int indices (1e12 per m² once overflowed
+    /// them, undefined behaviour) nor the memory.
+    bool checkSoftGridSize(const Body& body, const std::string& path)
+    {
+        Vec2 size = Vec2::Zero();
+        if (const auto* circle = std::get_if<Circle>(&body.shape)) {
+            size = Vec2::Constant(2 * circle->radius);
+        } else if (const auto* ellipse = std::get_if<Ellipse>(&body.shape)) {
+            size = Vec2(2 * ellipse->radiusX, 2 * ellipse->radiusY);
+        } else {
+            Vec2 lower = body.geometry.outline.front();
+            Vec2 upper = lower;
+            for (const Vec2& v : body.geometry.outline) {
+                lower = lower.cwiseMin(v);
+                upper = upper.cwiseMax(v);
+            }
+            size = upper - lower;
+        }
+        const Scalar density =
+            body.soft->autoDensity ? constants::kSoftAutoDensities[0] : body.soft->ellipsesPerSquareMeter;
+        const Scalar cells = size.x() * size.y() * density;
+        if (cells <= kMaxSoftGridCells)
+            return true;
+        // Three significant digits: the sizes of such a grid, not their last bits, are the point.
+        const auto rounded = [](Scalar x) {
+            std::ostringstream text;
+            text << std::setprecision(3) << x;
+            return text.str();
+        };
+        const std::string densityText = body.soft->autoDensity
+                                            ? "\"auto\" (at least " + rounded(density) + " per m²)"
+                                            : rounded(density) + " per m²";
+        report(memberPath(path, "ellipsesPerSquareMeter"),
+               "a grid of " + rounded(cells) + " ellipses (" + densityText + " over the " + rounded(size.x()) +
+                   " m × " + rounded(size.y()) + " m the shape spans), more than the " +
+                   rounded(kMaxSoftGridCells) + " a soft body may have");
+        return false;
     }
 
     /// Reads a shape; true when it is complete and valid.

@@ -33,6 +33,12 @@ inline constexpr std::uintmax_t kMaxSceneFileBytes = 64ull * 1024 * 1024;
 /// ten-million-level document).
 inline constexpr std::size_t kMaxJsonDepth = 64;
 
+/// The most cells a soft body's grid may have: its bounding box's area times its density of
+/// ellipses (for "auto", the lowest density it can choose). A million ellipses already take
+/// hundreds of megabytes and seconds a step; a density of 1e12 per m², legal as a number, would
+/// ask for a grid the lattice's int indices cannot count. docs/scene-format.md, "Limits".
+inline constexpr double kMaxSoftGridCells = 1e6;
+
 /// One problem in a scene: the JSON path (e.g. "bodies[2].shape.vertices", or "(root)" for the
 /// document itself) and the reason. toString() gives "path: reason".
 struct SceneProblem {

@@ -4,6 +4,7 @@
 #include "controller/diagnostics.h"
 #include "controller/integration/force_model.h"
 #include "controller/simulation.h"
+#include "model/constants.h"
 #include "support/world_builders.h"
 
 #include <gtest/gtest.h>
@@ -142,6 +143,44 @@ TEST(StokesDrag, CoastingBodyDecaysExponentially)
     const Scalar factor = std::exp(-b * 3.0 / m);
     EXPECT_NEAR(world.bodies[0].state.velocity.x(), 3 * factor, 1e-9);
     EXPECT_NEAR(world.bodies[0].state.velocity.y(), -4 * factor, 1e-9);
+}
+
+// A 1 g pebble under b = 1 N·s/m (drag rate b/m = 1000/s, far faster than the 1/60 s step) comes
+// to rest without changing direction and then falls at its terminal speed m·g/b, under every
+// integrator. Taken whole, the step multiplied its velocity by 1 − b·h/m = −15.7 every step (soak
+// seed 136): the step is split so that b·h/m stays at most constants::kMaxDragRateStep.
+TEST(StokesDrag, LightBodyUnderStrongDragStaysStable)
+{
+    const Scalar m = 1e-3;
+    const Scalar b = 1.0;
+    const Scalar g = 9.81;
+    const Scalar h = 1.0 / 60.0;
+    for (const IntegratorKind kind : {IntegratorKind::Euler, IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4}) {
+        model::World world = makeEmptyWorld(kind, h, Vec2(0, -g));
+        world.settings.drag = b;
+        world.bodies.push_back(makeBall("pebble", m, 0.01, Vec2(0, 100), Vec2(5, 0)));
+        EXPECT_EQ(dragSubsteps(world, h), static_cast<int>(std::ceil(b / m * h / constants::kMaxDragRateStep)));
+        Simulation simulation;
+        Scalar previousVx = 5;
+        for (int i = 0; i < 60; ++i) {
+            simulation.step(world);
+            const Scalar vx = world.bodies[0].state.velocity.x();
+            EXPECT_GE(vx, 0) << model::integratorName(kind) << ", step " << i;
+            EXPECT_LE(vx, previousVx) << model::integratorName(kind) << ", step " << i;
+            previousVx = vx;
+        }
+        // After 1 s = 1000 drag times the velocity is the terminal one to rounding: each
+        // integrator's fixed point of v' = g − (b/m)·v is v = −m·g/b.
+        EXPECT_NEAR(world.bodies[0].state.velocity.y(), -m * g / b, 1e-12) << model::integratorName(kind);
+        EXPECT_NEAR(world.bodies[0].state.velocity.x(), 0, 1e-12) << model::integratorName(kind);
+    }
+    // Without drag, or with a heavy body, the step is not split for it.
+    model::World heavy = makeEmptyWorld(IntegratorKind::Rk4, h);
+    heavy.settings.drag = b;
+    heavy.bodies.push_back(makeBall("ball", 1.0, 0.1, Vec2(0, 0)));
+    EXPECT_EQ(dragSubsteps(heavy, h), 1);
+    heavy.settings.drag = 0;
+    EXPECT_EQ(dragSubsteps(heavy, h), 1);
 }
 
 // A spring between two free bodies is an internal force: with no gravity, every integrator keeps

@@ -104,5 +104,49 @@ TEST(SceneNesting, TenMillionLevelsAreRefused)
     EXPECT_NE(problem.find("nested deeper than 64 levels"), std::string::npos) << problem;
 }
 
+/// A scene of one soft body of `shape` (JSON) whose `soft` object is `soft` (JSON).
+std::string softScene(const std::string& shape, const std::string& soft)
+{
+    return R"({"format":"impetus-scene","version":1,"bodies":[{"name":"jelly","shape":)" + shape +
+           R"(,"position":[0,0],"soft":)" + soft + "}]}";
+}
+
+// Found while fuzzing `impetus-cli run` (issue 16): a density of 1e12 per m² on a 1 m box was read,
+// and the grid builder's columns × rows (a million each) overflowed its int, undefined behaviour;
+// the release CLI then died "out of memory". 1e30 per m² even ran, silently, as a grid of one
+// ellipse (the column count's lround overflowed). Now such a scene is refused with the sizes.
+TEST(SoftGridLimit, ADensityBeyondTheCapIsRefusedWithTheGridSize)
+{
+    EXPECT_EQ(onlyProblem(parseScene(softScene(R"({"type":"box","width":1,"height":1})",
+                                               R"({"ellipsesPerSquareMeter":1e12})"))),
+              "bodies[0].soft.ellipsesPerSquareMeter: a grid of 1e+12 ellipses (1e+12 per m² over the 1 m × 1 m "
+              "the shape spans), more than the 1e+06 a soft body may have");
+    const std::string absurd = onlyProblem(
+        parseScene(softScene(R"({"type":"circle","radius":0.5})", R"({"ellipsesPerSquareMeter":1e30})")));
+    EXPECT_EQ(absurd.rfind("bodies[0].soft.ellipsesPerSquareMeter: a grid of 1e+30 ellipses", 0), 0u) << absurd;
+}
+
+// The cap counts the shape's bounding box, as the grid builder lays its lattice: an ellipse
+// 2000 m × 2 m at "auto" (64 per m² at least) would have 256,000 cells; 20,000 m × 2 m, 2.56e6.
+TEST(SoftGridLimit, AutoIsJudgedAtItsLowestDensity)
+{
+    EXPECT_TRUE(parseScene(softScene(R"({"type":"ellipse","radiusX":1000,"radiusY":1})",
+                                     R"({"ellipsesPerSquareMeter":"auto"})"))
+                    .ok());
+    const std::string problem = onlyProblem(parseScene(
+        softScene(R"({"type":"ellipse","radiusX":10000,"radiusY":1})", R"({"ellipsesPerSquareMeter":"auto"})")));
+    EXPECT_NE(problem.find("a grid of 2.56e+06 ellipses (\"auto\" (at least 64 per m²) over the 2e+04 m × 2 m"),
+              std::string::npos)
+        << problem;
+}
+
+// Exactly at the cap is still read: a 10 m square polygon at 10,000 per m².
+TEST(SoftGridLimit, TheCapItselfIsAllowed)
+{
+    const std::string square = R"({"type":"polygon","vertices":[[0,0],[10,0],[10,10],[0,10]]})";
+    EXPECT_TRUE(parseScene(softScene(square, R"({"ellipsesPerSquareMeter":10000})")).ok());
+    EXPECT_FALSE(parseScene(softScene(square, R"({"ellipsesPerSquareMeter":10001})")).ok());
+}
+
 } // namespace
 } // namespace impetus::model
