@@ -1693,7 +1693,7 @@
     </message>
     <message>
         <source>&amp;Trails</source>
-        <translation>&amp;Spuren</translation>
+        <translation>Sp&amp;uren</translation>
     </message>
     <message>
         <source>Draw the path of each body&apos;s centre of mass, with a dot every few steps</source>
@@ -1701,7 +1701,7 @@
     </message>
     <message>
         <source>Trail &amp;Dots Every</source>
-        <translation>Spur&amp;punkte alle</translation>
+        <translation>Spurpunk&amp;te alle</translation>
     </message>
     <message numerus="yes">
         <source>%n step(s)</source>
@@ -1720,7 +1720,7 @@
     </message>
     <message>
         <source>New &amp;Graph</source>
-        <translation>Neues &amp;Diagramm</translation>
+        <translation>&amp;Neues Diagramm</translation>
     </message>
     <message>
         <source>Plot a quantity of the selected body against time, or against another quantity</source>

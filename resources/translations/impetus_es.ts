@@ -1842,7 +1842,7 @@
     <name>impetus::view::ProjectorMode</name>
     <message>
         <source>&amp;Projector Mode</source>
-        <translation>Modo &amp;proyector</translation>
+        <translation>&amp;Modo proyector</translation>
     </message>
     <message>
         <source>Full screen, large text and readouts, thick lines and strong contrast for a projector (F11)</source>
