@@ -343,6 +343,159 @@
     </message>
 </context>
 <context>
+    <name>impetus::view::CollisionInspector</name>
+    <message>
+        <source>Pause the run to bring the log up to date.</source>
+        <translation>Die Simulation anhalten, um das Protokoll zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>No collisions yet. Run or step the scene, then pause.</source>
+        <translation>Noch keine Stöße. Die Szene laufen lassen oder schrittweise weiterschalten, dann anhalten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n collision(s). Click one to see its impulse.</source>
+        <translation>
+            <numerusform>%n Stoß. Anklicken, um seinen Kraftstoß zu sehen.</numerusform>
+            <numerusform>%n Stöße. Einen anklicken, um seinen Kraftstoß zu sehen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>t = %1 s: %2 and %3, impulse %4 N·s</source>
+        <translation>t = %1 s: %2 und %3, Kraftstoß %4 N·s</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;%1 and %2 at t = %3 s&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;%1 und %2 bei t = %3 s&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Normal n = %1 (from %2 to %3). Total normal impulse this step, as logged: &lt;b&gt;%4 N·s&lt;/b&gt;; relative normal speed %5 m/s before, %6 m/s after the step.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Normale n = %1 (von %2 zu %3). Gesamter Kraftstoß längs der Normalen in diesem Schritt, laut Protokoll: &lt;b&gt;%4 N·s&lt;/b&gt;; relative Normalgeschwindigkeit %5 m/s vor und %6 m/s nach dem Schritt.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No impact: the bodies met slower than the restitution threshold (%1 m/s), or were already touching, so the contact forces alone stopped the approach. No bounce, e plays no part.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Kein Stoß: Die Körper trafen langsamer aufeinander als die Schwelle für die Stoßzahl (%1 m/s) oder berührten sich schon, daher haben allein die Kontaktkräfte die Annäherung gestoppt. Kein Abprall, e spielt keine Rolle.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h4&gt;Impact %1 of %2&lt;/h4&gt;</source>
+        <translation>&lt;h4&gt;Stoß %1 von %2&lt;/h4&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</source>
+        <translation>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Point %1&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Punkt %1&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;r&lt;sub&gt;A&lt;/sub&gt; = %1 m, r&lt;sub&gt;B&lt;/sub&gt; = %2 m; r&lt;sub&gt;A&lt;/sub&gt;×n = %3 m, r&lt;sub&gt;B&lt;/sub&gt;×n = %4 m&lt;br&gt;relative normal speed before v&lt;sub&gt;n&lt;/sub&gt; = %5 m/s&lt;/p&gt;</source>
+        <translation>&lt;p&gt;r&lt;sub&gt;A&lt;/sub&gt; = %1 m, r&lt;sub&gt;B&lt;/sub&gt; = %2 m; r&lt;sub&gt;A&lt;/sub&gt;×n = %3 m, r&lt;sub&gt;B&lt;/sub&gt;×n = %4 m&lt;br&gt;relative Normalgeschwindigkeit vorher v&lt;sub&gt;n&lt;/sub&gt; = %5 m/s&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; / (1/m&lt;sub&gt;A&lt;/sub&gt; + 1/m&lt;sub&gt;B&lt;/sub&gt; + (r&lt;sub&gt;A&lt;/sub&gt;×n)²/I&lt;sub&gt;A&lt;/sub&gt; + (r&lt;sub&gt;B&lt;/sub&gt;×n)²/I&lt;sub&gt;B&lt;/sub&gt;)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / (%3 + %4 + (%5)²·%6 + (%7)²·%8)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / %9 = &lt;b&gt;%10 N·s&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; / (1/m&lt;sub&gt;A&lt;/sub&gt; + 1/m&lt;sub&gt;B&lt;/sub&gt; + (r&lt;sub&gt;A&lt;/sub&gt;×n)²/I&lt;sub&gt;A&lt;/sub&gt; + (r&lt;sub&gt;B&lt;/sub&gt;×n)²/I&lt;sub&gt;B&lt;/sub&gt;)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / (%3 + %4 + (%5)²·%6 + (%7)²·%8)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / %9 = &lt;b&gt;%10 N·s&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;|v&lt;sub&gt;n&lt;/sub&gt;| is below the restitution threshold (%1 m/s): the impulse only stops the approach, e counts as 0.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;|v&lt;sub&gt;n&lt;/sub&gt;| liegt unter der Schwelle für die Stoßzahl (%1 m/s): Der Kraftstoß stoppt nur die Annäherung, e zählt als 0.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Two points struck at once: the engine solves K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; for both together, K = [[%1, %2], [%3, %4]] 1/kg, and applied &lt;b&gt;%5 N·s&lt;/b&gt; here (the formula above is this point alone).&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Zwei Punkte gleichzeitig getroffen: Die Simulation löst K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; für beide zusammen, K = [[%1, %2], [%3, %4]] 1/kg, und hat hier &lt;b&gt;%5 N·s&lt;/b&gt; aufgebracht (die Formel oben gilt für diesen Punkt allein).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The engine applied %1 N·s.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Die Simulation hat %1 N·s aufgebracht.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Normal speed after: v&lt;sub&gt;n&lt;/sub&gt;′ = %1 m/s (−e·v&lt;sub&gt;n&lt;/sub&gt; = %2 m/s)&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Normalgeschwindigkeit danach: v&lt;sub&gt;n&lt;/sub&gt;′ = %1 m/s (−e·v&lt;sub&gt;n&lt;/sub&gt; = %2 m/s)&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Friction: tangential speed v&lt;sub&gt;t&lt;/sub&gt; = %1 m/s; stopping it needs −v&lt;sub&gt;t&lt;/sub&gt;/K&lt;sub&gt;t&lt;/sub&gt; = %2 N·s with K&lt;sub&gt;t&lt;/sub&gt; = %3 1/kg; the limit μ·j = %4 N·s; applied %5 N·s: &lt;b&gt;%6&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Reibung: Tangentialgeschwindigkeit v&lt;sub&gt;t&lt;/sub&gt; = %1 m/s; um sie zu stoppen, braucht es −v&lt;sub&gt;t&lt;/sub&gt;/K&lt;sub&gt;t&lt;/sub&gt; = %2 N·s mit K&lt;sub&gt;t&lt;/sub&gt; = %3 1/kg; die Grenze ist μ·j = %4 N·s; aufgebracht %5 N·s: &lt;b&gt;%6&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>it slid (friction at its limit)</source>
+        <translation>Gleiten (Reibung an ihrer Grenze)</translation>
+    </message>
+    <message>
+        <source>it stuck (sliding stopped)</source>
+        <translation>Haften (das Gleiten wurde gestoppt)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Momentum of the pair: %1 → %2 kg·m/s&lt;br&gt;Kinetic energy of the pair: %3 → %4 J (%5 J)&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Impuls des Paars: %1 → %2 kg·m/s&lt;br&gt;Kinetische Energie des Paars: %3 → %4 J (%5 J)&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;A fixed body takes any momentum: the pair&apos;s momentum changes by the impulse.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Ein fester Körper nimmt jeden Impuls auf: Der Impuls des Paars ändert sich um den Kraftstoß.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::EnergyLedgerChart</name>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>energy (J)</source>
+        <translation>Energie (J)</translation>
+    </message>
+    <message>
+        <source>Kinetic</source>
+        <translation>Kinetisch</translation>
+    </message>
+    <message>
+        <source>Potential</source>
+        <translation>Potentiell</translation>
+    </message>
+    <message>
+        <source>Elastic</source>
+        <translation>Elastisch</translation>
+    </message>
+    <message>
+        <source>Impacts</source>
+        <translation>Stöße</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Reibung</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Luftwiderstand</translation>
+    </message>
+    <message>
+        <source>Spring damping</source>
+        <translation>Federdämpfung</translation>
+    </message>
+    <message>
+        <source>Soft damping</source>
+        <translation>Dämpfung (weich)</translation>
+    </message>
+    <message>
+        <source>Joints</source>
+        <translation>Gelenke</translation>
+    </message>
+    <message>
+        <source>Position correction</source>
+        <translation>Lagekorrektur</translation>
+    </message>
+    <message>
+        <source>Drift</source>
+        <translation>Drift</translation>
+    </message>
+    <message>
+        <source>Run the simulation to fill the energy ledger.</source>
+        <translation>Die Simulation laufen lassen, um die Energiebilanz zu füllen.</translation>
+    </message>
+    <message>
+        <source>Start %1 J = now %2 J + losses %3 J (off by %4 J); drift %5 J</source>
+        <translation>Anfang %1 J = jetzt %2 J + Verluste %3 J (Abweichung %4 J); Drift %5 J</translation>
+    </message>
+</context>
+<context>
     <name>impetus::view::Examples</name>
     <message>
         <source>Billiards break</source>
@@ -399,6 +552,10 @@
     <message>
         <source>Lesson: pendulum period and length</source>
         <translation>Lektion: Periode und Länge des Pendels</translation>
+    </message>
+    <message>
+        <source>Mass on a spring</source>
+        <translation>Masse an einer Feder</translation>
     </message>
 </context>
 <context>
@@ -482,6 +639,160 @@
     <message>
         <source>PNG pictures (*.png);;All files (*)</source>
         <translation>PNG-Bilder (*.png);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::IntegratorGhosts</name>
+    <message>
+        <source>Explicit Euler</source>
+        <translation>Explizites Euler-Verfahren</translation>
+    </message>
+    <message>
+        <source>Semi-implicit Euler</source>
+        <translation>Halbimplizites Euler-Verfahren</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>1/%1 s</source>
+        <translation>1/%1 s</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Ghosts, h = %1</source>
+        <translation>Geister, h = %1</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::IntegratorGhostsPanel</name>
+    <message>
+        <source>Energy error</source>
+        <translation>Energiefehler</translation>
+    </message>
+    <message>
+        <source>Position error</source>
+        <translation>Positionsfehler</translation>
+    </message>
+    <message>
+        <source>Energy error: (E − E₀)/|E₀|. Position error: the largest distance of a body from the textbook solution.</source>
+        <translation>Energiefehler: (E − E₀)/|E₀|. Positionsfehler: der größte Abstand eines Körpers von der Lehrbuchlösung.</translation>
+    </message>
+    <message>
+        <source>Ghosts&apos; time step h:</source>
+        <translation>Zeitschritt h der Geister:</translation>
+    </message>
+    <message>
+        <source>Ghosts&apos; time step</source>
+        <translation>Zeitschritt der Geister</translation>
+    </message>
+    <message>
+        <source>The ghosts&apos; fixed time step, from 1/1000 s (left) to 1/30 s (right)</source>
+        <translation>Der feste Zeitschritt der Geister, von 1/1000 s (links) bis 1/30 s (rechts)</translation>
+    </message>
+    <message>
+        <source>Largest position error in %1 s against the time step</source>
+        <translation>Größter Positionsfehler in %1 s über dem Zeitschritt</translation>
+    </message>
+    <message>
+        <source>time step h (s)</source>
+        <translation>Zeitschritt h (s)</translation>
+    </message>
+    <message>
+        <source>position error (m)</source>
+        <translation>Positionsfehler (m)</translation>
+    </message>
+    <message>
+        <source>ghosts&apos; h</source>
+        <translation>h der Geister</translation>
+    </message>
+    <message>
+        <source>Analytic solution: free flight, x = x₀ + v₀t + ½gt², until the first contact.</source>
+        <translation>Analytische Lösung: freier Flug, x = x₀ + v₀t + ½gt², bis zum ersten Kontakt.</translation>
+    </message>
+    <message>
+        <source>Analytic solution: a mass on a spring, x = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m).</source>
+        <translation>Analytische Lösung: eine Masse an einer Feder, x = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m).</translation>
+    </message>
+    <message>
+        <source>Analytic solution: a pendulum at any amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L), until the first contact.</source>
+        <translation>Analytische Lösung: ein Pendel bei beliebiger Amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L), bis zum ersten Kontakt.</translation>
+    </message>
+    <message>
+        <source>No analytic solution for this scene: only the energy errors can be compared.</source>
+        <translation>Keine analytische Lösung für diese Szene: Nur die Energiefehler lassen sich vergleichen.</translation>
+    </message>
+    <message>
+        <source>Bodies held by joints move by semi-implicit Euler whichever integrator is chosen, so their ghosts lie on one another.</source>
+        <translation>Körper, die von Gelenken gehalten werden, bewegen sich unabhängig vom gewählten Integrator nach dem halbimpliziten Euler-Verfahren, daher liegen ihre Geister übereinander.</translation>
+    </message>
+    <message>
+        <source>diverged at t = %1 s</source>
+        <translation>divergiert bei t = %1 s</translation>
+    </message>
+    <message>
+        <source>diverged</source>
+        <translation>divergiert</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>no analytic solution after a contact</source>
+        <translation>keine analytische Lösung nach einem Kontakt</translation>
+    </message>
+    <message>
+        <source>no analytic solution</source>
+        <translation>keine analytische Lösung</translation>
+    </message>
+    <message>
+        <source>Ghosts at t = %1 s after their start: n = %2 steps of h = %3%4</source>
+        <translation>Geister bei t = %1 s nach ihrem Start: n = %2 Schritte zu h = %3%4</translation>
+    </message>
+    <message>
+        <source> (catching up)</source>
+        <translation> (holen auf)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 exact to rounding</source>
+        <translation>%1 bis auf Rundung exakt</translation>
+    </message>
+    <message>
+        <source>No analytic solution for this scene: no error to plot.</source>
+        <translation>Keine analytische Lösung für diese Szene: kein Fehler darzustellen.</translation>
+    </message>
+    <message>
+        <source>Fitted slopes (the method&apos;s order): %1</source>
+        <translation>Angepasste Steigungen (die Ordnung des Verfahrens): %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Integrator Ghosts</source>
+        <translation>Geister der Integratoren</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Integrators</source>
+        <translation>&amp;Integratoren vergleichen</translation>
+    </message>
+    <message>
+        <source>Run the scene under explicit Euler, semi-implicit Euler and RK4 beside the real run, drawn as ghosts, with their errors</source>
+        <translation>Die Szene neben dem echten Lauf mit explizitem Euler-Verfahren, halbimplizitem Euler-Verfahren und RK4 laufen lassen, als Geister gezeichnet, mit ihren Fehlern</translation>
     </message>
 </context>
 <context>
@@ -1425,7 +1736,7 @@
     </message>
     <message>
         <source>&amp;Trails</source>
-        <translation>&amp;Spuren</translation>
+        <translation>Sp&amp;uren</translation>
     </message>
     <message>
         <source>Draw the path of each body&apos;s centre of mass, with a dot every few steps</source>
@@ -1433,7 +1744,7 @@
     </message>
     <message>
         <source>Trail &amp;Dots Every</source>
-        <translation>Spur&amp;punkte alle</translation>
+        <translation>Spurpunk&amp;te alle</translation>
     </message>
     <message numerus="yes">
         <source>%n step(s)</source>
@@ -1452,7 +1763,7 @@
     </message>
     <message>
         <source>New &amp;Graph</source>
-        <translation>Neues &amp;Diagramm</translation>
+        <translation>&amp;Neues Diagramm</translation>
     </message>
     <message>
         <source>Plot a quantity of the selected body against time, or against another quantity</source>
@@ -1469,6 +1780,42 @@
     <message>
         <source>Click a body to read its position, velocity, energies and collisions as it moves</source>
         <translation>Einen Körper anklicken, um Position, Geschwindigkeit, Energien und Stöße abzulesen, während er sich bewegt</translation>
+    </message>
+    <message>
+        <source>E&amp;xplain</source>
+        <translation>&amp;Erklären</translation>
+    </message>
+    <message>
+        <source>&amp;Separating Axes</source>
+        <translation>&amp;Trennende Achsen</translation>
+    </message>
+    <message>
+        <source>Show how the collision test treats the two selected bodies, axis by axis (N: next, P: previous, Esc: close)</source>
+        <translation>Zeigen, wie der Kollisionstest die beiden ausgewählten Körper behandelt, Achse für Achse (N: nächste, P: vorige, Esc: schließen)</translation>
+    </message>
+    <message>
+        <source>Collision Inspector</source>
+        <translation>Stoßinspektor</translation>
+    </message>
+    <message>
+        <source>&amp;Collision Inspector</source>
+        <translation>&amp;Stoßinspektor</translation>
+    </message>
+    <message>
+        <source>List the collisions of the run; click one to see its impulse worked out</source>
+        <translation>Die Stöße des Laufs auflisten; einen anklicken, um die Berechnung seines Kraftstoßes zu sehen</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Ledger</source>
+        <translation>Energie&amp;bilanz</translation>
+    </message>
+    <message>
+        <source>Chart where the energy goes: what each cause has taken out, stacked over time</source>
+        <translation>Darstellen, wohin die Energie geht: was jede Ursache entnommen hat, über die Zeit gestapelt</translation>
+    </message>
+    <message>
+        <source>Energy Ledger</source>
+        <translation>Energiebilanz</translation>
     </message>
 </context>
 <context>
@@ -2185,6 +2532,121 @@
     <message>
         <source>Warning: %1</source>
         <translation>Warnung: %1</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::SatExplainer</name>
+    <message>
+        <source>Separating axes: A = %1 (blue), B = %2 (orange)</source>
+        <translation>Trennende Achsen: A = %1 (blau), B = %2 (orange)</translation>
+    </message>
+    <message>
+        <source>Convex pieces: %1 of A and %2 of B (pair %3 of %4)</source>
+        <translation>Konvexe Teile: %1 von A und %2 von B (Paar %3 von %4)</translation>
+    </message>
+    <message>
+        <source>Method: SAT over the face normals of both polygons: %1 candidate axes, %2 tested.</source>
+        <translation>Verfahren: Trennachsentest (SAT) über die Seitennormalen beider Polygone: %1 mögliche Achsen, %2 geprüft.</translation>
+    </message>
+    <message>
+        <source>Method: the polygon&apos;s face normals, then the feature of the polygon closest to the circle&apos;s centre (a face or a corner): a circle has no faces of its own.</source>
+        <translation>Verfahren: die Seitennormalen des Polygons, dann das Element des Polygons, das dem Kreismittelpunkt am nächsten liegt (eine Seite oder eine Ecke): Ein Kreis hat selbst keine Seiten.</translation>
+    </message>
+    <message>
+        <source>Method: two circles need a single axis, the line through their centres.</source>
+        <translation>Verfahren: Zwei Kreise brauchen nur eine Achse, die Gerade durch ihre Mittelpunkte.</translation>
+    </message>
+    <message>
+        <source>Method: GJK and EPA. An ellipse has no faces, so there are no axes to test: GJK finds the distance between the shapes, and when they overlap EPA finds the depth and the direction of least penetration (to 0.001 mm).</source>
+        <translation>Verfahren: GJK und EPA. Eine Ellipse hat keine Seiten, also gibt es keine Achsen zu prüfen: GJK findet den Abstand der Formen, und wenn sie sich überlappen, findet EPA die Tiefe und die Richtung der geringsten Eindringung (auf 0,001 mm genau).</translation>
+    </message>
+    <message>
+        <source>Result: normal %1, depth %2 mm at %3.</source>
+        <translation>Ergebnis: Normale %1, Tiefe %2 mm bei %3.</translation>
+    </message>
+    <message>
+        <source>Result: the shapes are apart.</source>
+        <translation>Ergebnis: Die Formen sind getrennt.</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>normal of face %1 of %2</source>
+        <translation>Normale der Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>from corner %1 of %2 to the circle&apos;s centre</source>
+        <translation>von Ecke %1 von %2 zum Kreismittelpunkt</translation>
+    </message>
+    <message>
+        <source>line of centres, from A to B</source>
+        <translation>Verbindungslinie der Mittelpunkte, von A nach B</translation>
+    </message>
+    <message>
+        <source>Axis %1 of %2: %3, direction %4</source>
+        <translation>Achse %1 von %2: %3, Richtung %4</translation>
+    </message>
+    <message>
+        <source>Projections: %1 from %2 to %3 mm, %4 from %5 to %6 mm</source>
+        <translation>Projektionen: %1 von %2 bis %3 mm, %4 von %5 bis %6 mm</translation>
+    </message>
+    <message>
+        <source>Overlap on this axis: %1 mm</source>
+        <translation>Überlappung auf dieser Achse: %1 mm</translation>
+    </message>
+    <message>
+        <source>Gap on this axis: %1 mm</source>
+        <translation>Abstand auf dieser Achse: %1 mm</translation>
+    </message>
+    <message>
+        <source>This axis separates the shapes: no contact. The search stops here (%1 of %2 axes tested).</source>
+        <translation>Diese Achse trennt die Formen: kein Kontakt. Die Suche endet hier (%1 von %2 Achsen geprüft).</translation>
+    </message>
+    <message>
+        <source>This is the axis of least overlap.</source>
+        <translation>Dies ist die Achse der geringsten Überlappung.</translation>
+    </message>
+    <message>
+        <source>Separated: axis %1 leaves a gap of %2 mm, so the pair is not in contact.</source>
+        <translation>Getrennt: Achse %1 lässt einen Abstand von %2 mm, also berührt sich das Paar nicht.</translation>
+    </message>
+    <message>
+        <source>Least overlap: axis %1 (%2), %3 mm</source>
+        <translation>Geringste Überlappung: Achse %1 (%2), %3 mm</translation>
+    </message>
+    <message>
+        <source>B&apos;s best face is better by less than the tolerance, so A&apos;s face stays the reference: resting stacks do not swap faces on rounding noise.</source>
+        <translation>Die beste Seite von B ist um weniger als die Toleranz besser, daher bleibt die Seite von A die Referenz: Ruhende Stapel wechseln ihre Seiten nicht wegen Rundungsrauschen.</translation>
+    </message>
+    <message>
+        <source>Minimum translation vector: %1 mm along %2 (moves B off A)</source>
+        <translation>Minimaler Verschiebungsvektor: %1 mm entlang %2 (schiebt B von A weg)</translation>
+    </message>
+    <message>
+        <source>Reference face (green): face %1 of %2; incident face (purple): face %3 of %4</source>
+        <translation>Referenzseite (grün): Seite %1 von %2; einfallende Seite (lila): Seite %3 von %4</translation>
+    </message>
+    <message>
+        <source>The incident face lies beyond the reference face&apos;s ends (corner to corner): one point.</source>
+        <translation>Die einfallende Seite liegt jenseits der Enden der Referenzseite (Ecke an Ecke): ein Punkt.</translation>
+    </message>
+    <message>
+        <source>Clipped to the reference face&apos;s sides: %1 points; kept (touching): %2</source>
+        <translation>An den Seitengrenzen der Referenzseite abgeschnitten: %1 Punkte; behalten (berührend): %2</translation>
+    </message>
+    <message>
+        <source>Contact point %1: %2 m, separation %3 mm</source>
+        <translation>Kontaktpunkt %1: %2 m, Abstand %3 mm</translation>
+    </message>
+    <message>
+        <source>N: next axis   P: previous   Esc: close</source>
+        <translation>N: nächste Achse   P: vorige   Esc: schließen</translation>
     </message>
 </context>
 <context>

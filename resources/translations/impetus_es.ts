@@ -343,6 +343,159 @@
     </message>
 </context>
 <context>
+    <name>impetus::view::CollisionInspector</name>
+    <message>
+        <source>Pause the run to bring the log up to date.</source>
+        <translation>Pausa la simulación para actualizar el registro.</translation>
+    </message>
+    <message>
+        <source>No collisions yet. Run or step the scene, then pause.</source>
+        <translation>Aún no hay colisiones. Ejecuta la escena o avánzala paso a paso, y luego pausa.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n collision(s). Click one to see its impulse.</source>
+        <translation>
+            <numerusform>%n colisión. Haz clic en ella para ver su impulso.</numerusform>
+            <numerusform>%n colisiones. Haz clic en una para ver su impulso.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>t = %1 s: %2 and %3, impulse %4 N·s</source>
+        <translation>t = %1 s: %2 y %3, impulso %4 N·s</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;%1 and %2 at t = %3 s&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;%1 y %2 en t = %3 s&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Normal n = %1 (from %2 to %3). Total normal impulse this step, as logged: &lt;b&gt;%4 N·s&lt;/b&gt;; relative normal speed %5 m/s before, %6 m/s after the step.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Normal n = %1 (de %2 a %3). Impulso normal total en este paso, según el registro: &lt;b&gt;%4 N·s&lt;/b&gt;; velocidad normal relativa %5 m/s antes y %6 m/s después del paso.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No impact: the bodies met slower than the restitution threshold (%1 m/s), or were already touching, so the contact forces alone stopped the approach. No bounce, e plays no part.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Sin choque: los cuerpos se encontraron más despacio que el umbral de restitución (%1 m/s), o ya estaban en contacto, así que solo las fuerzas de contacto detuvieron el acercamiento. No hay rebote; e no interviene.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h4&gt;Impact %1 of %2&lt;/h4&gt;</source>
+        <translation>&lt;h4&gt;Choque %1 de %2&lt;/h4&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</source>
+        <translation>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Point %1&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Punto %1&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;r&lt;sub&gt;A&lt;/sub&gt; = %1 m, r&lt;sub&gt;B&lt;/sub&gt; = %2 m; r&lt;sub&gt;A&lt;/sub&gt;×n = %3 m, r&lt;sub&gt;B&lt;/sub&gt;×n = %4 m&lt;br&gt;relative normal speed before v&lt;sub&gt;n&lt;/sub&gt; = %5 m/s&lt;/p&gt;</source>
+        <translation>&lt;p&gt;r&lt;sub&gt;A&lt;/sub&gt; = %1 m, r&lt;sub&gt;B&lt;/sub&gt; = %2 m; r&lt;sub&gt;A&lt;/sub&gt;×n = %3 m, r&lt;sub&gt;B&lt;/sub&gt;×n = %4 m&lt;br&gt;velocidad normal relativa antes v&lt;sub&gt;n&lt;/sub&gt; = %5 m/s&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; / (1/m&lt;sub&gt;A&lt;/sub&gt; + 1/m&lt;sub&gt;B&lt;/sub&gt; + (r&lt;sub&gt;A&lt;/sub&gt;×n)²/I&lt;sub&gt;A&lt;/sub&gt; + (r&lt;sub&gt;B&lt;/sub&gt;×n)²/I&lt;sub&gt;B&lt;/sub&gt;)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / (%3 + %4 + (%5)²·%6 + (%7)²·%8)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / %9 = &lt;b&gt;%10 N·s&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; / (1/m&lt;sub&gt;A&lt;/sub&gt; + 1/m&lt;sub&gt;B&lt;/sub&gt; + (r&lt;sub&gt;A&lt;/sub&gt;×n)²/I&lt;sub&gt;A&lt;/sub&gt; + (r&lt;sub&gt;B&lt;/sub&gt;×n)²/I&lt;sub&gt;B&lt;/sub&gt;)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / (%3 + %4 + (%5)²·%6 + (%7)²·%8)&lt;br&gt;&amp;nbsp;&amp;nbsp;= −(1 + %1)·(%2) / %9 = &lt;b&gt;%10 N·s&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;|v&lt;sub&gt;n&lt;/sub&gt;| is below the restitution threshold (%1 m/s): the impulse only stops the approach, e counts as 0.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;|v&lt;sub&gt;n&lt;/sub&gt;| está por debajo del umbral de restitución (%1 m/s): el impulso solo detiene el acercamiento; e cuenta como 0.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Two points struck at once: the engine solves K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; for both together, K = [[%1, %2], [%3, %4]] 1/kg, and applied &lt;b&gt;%5 N·s&lt;/b&gt; here (the formula above is this point alone).&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Dos puntos golpeados a la vez: la simulación resuelve K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; para ambos juntos, K = [[%1, %2], [%3, %4]] 1/kg, y aplicó aquí &lt;b&gt;%5 N·s&lt;/b&gt; (la fórmula de arriba es solo para este punto).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The engine applied %1 N·s.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;La simulación aplicó %1 N·s.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Normal speed after: v&lt;sub&gt;n&lt;/sub&gt;′ = %1 m/s (−e·v&lt;sub&gt;n&lt;/sub&gt; = %2 m/s)&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Velocidad normal después: v&lt;sub&gt;n&lt;/sub&gt;′ = %1 m/s (−e·v&lt;sub&gt;n&lt;/sub&gt; = %2 m/s)&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Friction: tangential speed v&lt;sub&gt;t&lt;/sub&gt; = %1 m/s; stopping it needs −v&lt;sub&gt;t&lt;/sub&gt;/K&lt;sub&gt;t&lt;/sub&gt; = %2 N·s with K&lt;sub&gt;t&lt;/sub&gt; = %3 1/kg; the limit μ·j = %4 N·s; applied %5 N·s: &lt;b&gt;%6&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Rozamiento: velocidad tangencial v&lt;sub&gt;t&lt;/sub&gt; = %1 m/s; detenerla requiere −v&lt;sub&gt;t&lt;/sub&gt;/K&lt;sub&gt;t&lt;/sub&gt; = %2 N·s con K&lt;sub&gt;t&lt;/sub&gt; = %3 1/kg; el límite es μ·j = %4 N·s; aplicado %5 N·s: &lt;b&gt;%6&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>it slid (friction at its limit)</source>
+        <translation>se deslizó (rozamiento en su límite)</translation>
+    </message>
+    <message>
+        <source>it stuck (sliding stopped)</source>
+        <translation>se adhirió (el deslizamiento se detuvo)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Momentum of the pair: %1 → %2 kg·m/s&lt;br&gt;Kinetic energy of the pair: %3 → %4 J (%5 J)&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Momento lineal del par: %1 → %2 kg·m/s&lt;br&gt;Energía cinética del par: %3 → %4 J (%5 J)&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;A fixed body takes any momentum: the pair&apos;s momentum changes by the impulse.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Un cuerpo fijo absorbe cualquier momento lineal: el momento lineal del par cambia en lo que vale el impulso.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::EnergyLedgerChart</name>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>energy (J)</source>
+        <translation>energía (J)</translation>
+    </message>
+    <message>
+        <source>Kinetic</source>
+        <translation>Cinética</translation>
+    </message>
+    <message>
+        <source>Potential</source>
+        <translation>Potencial</translation>
+    </message>
+    <message>
+        <source>Elastic</source>
+        <translation>Elástica</translation>
+    </message>
+    <message>
+        <source>Impacts</source>
+        <translation>Choques</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Rozamiento</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Rozamiento del aire</translation>
+    </message>
+    <message>
+        <source>Spring damping</source>
+        <translation>Amortiguación de los muelles</translation>
+    </message>
+    <message>
+        <source>Soft damping</source>
+        <translation>Amortiguación (blando)</translation>
+    </message>
+    <message>
+        <source>Joints</source>
+        <translation>Uniones</translation>
+    </message>
+    <message>
+        <source>Position correction</source>
+        <translation>Corrección de posición</translation>
+    </message>
+    <message>
+        <source>Drift</source>
+        <translation>Deriva</translation>
+    </message>
+    <message>
+        <source>Run the simulation to fill the energy ledger.</source>
+        <translation>Ejecuta la simulación para llenar el balance de energía.</translation>
+    </message>
+    <message>
+        <source>Start %1 J = now %2 J + losses %3 J (off by %4 J); drift %5 J</source>
+        <translation>Inicio %1 J = ahora %2 J + pérdidas %3 J (desviación %4 J); deriva %5 J</translation>
+    </message>
+</context>
+<context>
     <name>impetus::view::Examples</name>
     <message>
         <source>Billiards break</source>
@@ -399,6 +552,10 @@
     <message>
         <source>Lesson: pendulum period and length</source>
         <translation>Lección: periodo y longitud del péndulo</translation>
+    </message>
+    <message>
+        <source>Mass on a spring</source>
+        <translation>Masa en un muelle</translation>
     </message>
 </context>
 <context>
@@ -482,6 +639,160 @@
     <message>
         <source>PNG pictures (*.png);;All files (*)</source>
         <translation>Imágenes PNG (*.png);;Todos los archivos (*)</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::IntegratorGhosts</name>
+    <message>
+        <source>Explicit Euler</source>
+        <translation>Euler explícito</translation>
+    </message>
+    <message>
+        <source>Semi-implicit Euler</source>
+        <translation>Euler semiimplícito</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>1/%1 s</source>
+        <translation>1/%1 s</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Ghosts, h = %1</source>
+        <translation>Fantasmas, h = %1</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::IntegratorGhostsPanel</name>
+    <message>
+        <source>Energy error</source>
+        <translation>Error de energía</translation>
+    </message>
+    <message>
+        <source>Position error</source>
+        <translation>Error de posición</translation>
+    </message>
+    <message>
+        <source>Energy error: (E − E₀)/|E₀|. Position error: the largest distance of a body from the textbook solution.</source>
+        <translation>Error de energía: (E − E₀)/|E₀|. Error de posición: la mayor distancia de un cuerpo a la solución del libro de texto.</translation>
+    </message>
+    <message>
+        <source>Ghosts&apos; time step h:</source>
+        <translation>Paso de tiempo h de los fantasmas:</translation>
+    </message>
+    <message>
+        <source>Ghosts&apos; time step</source>
+        <translation>Paso de tiempo de los fantasmas</translation>
+    </message>
+    <message>
+        <source>The ghosts&apos; fixed time step, from 1/1000 s (left) to 1/30 s (right)</source>
+        <translation>El paso de tiempo fijo de los fantasmas, de 1/1000 s (izquierda) a 1/30 s (derecha)</translation>
+    </message>
+    <message>
+        <source>Largest position error in %1 s against the time step</source>
+        <translation>Mayor error de posición en %1 s frente al paso de tiempo</translation>
+    </message>
+    <message>
+        <source>time step h (s)</source>
+        <translation>paso de tiempo h (s)</translation>
+    </message>
+    <message>
+        <source>position error (m)</source>
+        <translation>error de posición (m)</translation>
+    </message>
+    <message>
+        <source>ghosts&apos; h</source>
+        <translation>h de los fantasmas</translation>
+    </message>
+    <message>
+        <source>Analytic solution: free flight, x = x₀ + v₀t + ½gt², until the first contact.</source>
+        <translation>Solución analítica: vuelo libre, x = x₀ + v₀t + ½gt², hasta el primer contacto.</translation>
+    </message>
+    <message>
+        <source>Analytic solution: a mass on a spring, x = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m).</source>
+        <translation>Solución analítica: una masa en un muelle, x = x_eq + (x₀ − x_eq)·cos ωt + (v₀/ω)·sin ωt, ω = √(k/m).</translation>
+    </message>
+    <message>
+        <source>Analytic solution: a pendulum at any amplitude, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L), until the first contact.</source>
+        <translation>Solución analítica: un péndulo con cualquier amplitud, sin(θ/2) = k·sn(ω₀t + u₀, k), ω₀ = √(g/L), hasta el primer contacto.</translation>
+    </message>
+    <message>
+        <source>No analytic solution for this scene: only the energy errors can be compared.</source>
+        <translation>No hay solución analítica para esta escena: solo se pueden comparar los errores de energía.</translation>
+    </message>
+    <message>
+        <source>Bodies held by joints move by semi-implicit Euler whichever integrator is chosen, so their ghosts lie on one another.</source>
+        <translation>Los cuerpos sujetos por uniones se mueven con Euler semiimplícito sea cual sea el integrador elegido, así que sus fantasmas quedan superpuestos.</translation>
+    </message>
+    <message>
+        <source>diverged at t = %1 s</source>
+        <translation>divergió en t = %1 s</translation>
+    </message>
+    <message>
+        <source>diverged</source>
+        <translation>divergió</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>no analytic solution after a contact</source>
+        <translation>sin solución analítica tras un contacto</translation>
+    </message>
+    <message>
+        <source>no analytic solution</source>
+        <translation>sin solución analítica</translation>
+    </message>
+    <message>
+        <source>Ghosts at t = %1 s after their start: n = %2 steps of h = %3%4</source>
+        <translation>Fantasmas en t = %1 s desde su inicio: n = %2 pasos de h = %3%4</translation>
+    </message>
+    <message>
+        <source> (catching up)</source>
+        <translation> (recuperando el retraso)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 exact to rounding</source>
+        <translation>%1 exacto salvo redondeo</translation>
+    </message>
+    <message>
+        <source>No analytic solution for this scene: no error to plot.</source>
+        <translation>No hay solución analítica para esta escena: no hay error que representar.</translation>
+    </message>
+    <message>
+        <source>Fitted slopes (the method&apos;s order): %1</source>
+        <translation>Pendientes ajustadas (el orden del método): %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Integrator Ghosts</source>
+        <translation>Fantasmas de los integradores</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Integrators</source>
+        <translation>&amp;Comparar integradores</translation>
+    </message>
+    <message>
+        <source>Run the scene under explicit Euler, semi-implicit Euler and RK4 beside the real run, drawn as ghosts, with their errors</source>
+        <translation>Simular la escena con Euler explícito, Euler semiimplícito y RK4 junto a la simulación real, dibujadas como fantasmas, con sus errores</translation>
     </message>
 </context>
 <context>
@@ -1470,6 +1781,42 @@
         <source>Click a body to read its position, velocity, energies and collisions as it moves</source>
         <translation>Haz clic en un cuerpo para leer su posición, velocidad, energías y colisiones mientras se mueve</translation>
     </message>
+    <message>
+        <source>E&amp;xplain</source>
+        <translation>E&amp;xplicar</translation>
+    </message>
+    <message>
+        <source>&amp;Separating Axes</source>
+        <translation>&amp;Ejes separadores</translation>
+    </message>
+    <message>
+        <source>Show how the collision test treats the two selected bodies, axis by axis (N: next, P: previous, Esc: close)</source>
+        <translation>Mostrar cómo trata la prueba de colisión a los dos cuerpos seleccionados, eje por eje (N: siguiente, P: anterior, Esc: cerrar)</translation>
+    </message>
+    <message>
+        <source>Collision Inspector</source>
+        <translation>Inspector de colisiones</translation>
+    </message>
+    <message>
+        <source>&amp;Collision Inspector</source>
+        <translation>&amp;Inspector de colisiones</translation>
+    </message>
+    <message>
+        <source>List the collisions of the run; click one to see its impulse worked out</source>
+        <translation>Listar las colisiones de la simulación; haz clic en una para ver el cálculo de su impulso</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Ledger</source>
+        <translation>&amp;Balance de energía</translation>
+    </message>
+    <message>
+        <source>Chart where the energy goes: what each cause has taken out, stacked over time</source>
+        <translation>Representar adónde va la energía: lo que ha retirado cada causa, apilado a lo largo del tiempo</translation>
+    </message>
+    <message>
+        <source>Energy Ledger</source>
+        <translation>Balance de energía</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>
@@ -1538,7 +1885,7 @@
     <name>impetus::view::ProjectorMode</name>
     <message>
         <source>&amp;Projector Mode</source>
-        <translation>Modo &amp;proyector</translation>
+        <translation>&amp;Modo proyector</translation>
     </message>
     <message>
         <source>Full screen, large text and readouts, thick lines and strong contrast for a projector (F11)</source>
@@ -2185,6 +2532,121 @@
     <message>
         <source>Warning: %1</source>
         <translation>Aviso: %1</translation>
+    </message>
+</context>
+<context>
+    <name>impetus::view::SatExplainer</name>
+    <message>
+        <source>Separating axes: A = %1 (blue), B = %2 (orange)</source>
+        <translation>Ejes separadores: A = %1 (azul), B = %2 (naranja)</translation>
+    </message>
+    <message>
+        <source>Convex pieces: %1 of A and %2 of B (pair %3 of %4)</source>
+        <translation>Piezas convexas: %1 de A y %2 de B (par %3 de %4)</translation>
+    </message>
+    <message>
+        <source>Method: SAT over the face normals of both polygons: %1 candidate axes, %2 tested.</source>
+        <translation>Método: SAT sobre las normales de los lados de ambos polígonos: %1 ejes candidatos, %2 probados.</translation>
+    </message>
+    <message>
+        <source>Method: the polygon&apos;s face normals, then the feature of the polygon closest to the circle&apos;s centre (a face or a corner): a circle has no faces of its own.</source>
+        <translation>Método: las normales de los lados del polígono y después el elemento del polígono más cercano al centro del círculo (un lado o un vértice): un círculo no tiene lados propios.</translation>
+    </message>
+    <message>
+        <source>Method: two circles need a single axis, the line through their centres.</source>
+        <translation>Método: dos círculos necesitan un solo eje, la recta que pasa por sus centros.</translation>
+    </message>
+    <message>
+        <source>Method: GJK and EPA. An ellipse has no faces, so there are no axes to test: GJK finds the distance between the shapes, and when they overlap EPA finds the depth and the direction of least penetration (to 0.001 mm).</source>
+        <translation>Método: GJK y EPA. Una elipse no tiene lados, así que no hay ejes que probar: GJK halla la distancia entre las formas y, cuando se solapan, EPA halla la profundidad y la dirección de menor penetración (con precisión de 0,001 mm).</translation>
+    </message>
+    <message>
+        <source>Result: normal %1, depth %2 mm at %3.</source>
+        <translation>Resultado: normal %1, profundidad %2 mm en %3.</translation>
+    </message>
+    <message>
+        <source>Result: the shapes are apart.</source>
+        <translation>Resultado: las formas están separadas.</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>normal of face %1 of %2</source>
+        <translation>normal del lado %1 de %2</translation>
+    </message>
+    <message>
+        <source>from corner %1 of %2 to the circle&apos;s centre</source>
+        <translation>del vértice %1 de %2 al centro del círculo</translation>
+    </message>
+    <message>
+        <source>line of centres, from A to B</source>
+        <translation>línea de los centros, de A a B</translation>
+    </message>
+    <message>
+        <source>Axis %1 of %2: %3, direction %4</source>
+        <translation>Eje %1 de %2: %3, dirección %4</translation>
+    </message>
+    <message>
+        <source>Projections: %1 from %2 to %3 mm, %4 from %5 to %6 mm</source>
+        <translation>Proyecciones: %1 de %2 a %3 mm, %4 de %5 a %6 mm</translation>
+    </message>
+    <message>
+        <source>Overlap on this axis: %1 mm</source>
+        <translation>Solapamiento en este eje: %1 mm</translation>
+    </message>
+    <message>
+        <source>Gap on this axis: %1 mm</source>
+        <translation>Separación en este eje: %1 mm</translation>
+    </message>
+    <message>
+        <source>This axis separates the shapes: no contact. The search stops here (%1 of %2 axes tested).</source>
+        <translation>Este eje separa las formas: no hay contacto. La búsqueda termina aquí (%1 de %2 ejes probados).</translation>
+    </message>
+    <message>
+        <source>This is the axis of least overlap.</source>
+        <translation>Este es el eje de menor solapamiento.</translation>
+    </message>
+    <message>
+        <source>Separated: axis %1 leaves a gap of %2 mm, so the pair is not in contact.</source>
+        <translation>Separados: el eje %1 deja una separación de %2 mm, así que el par no está en contacto.</translation>
+    </message>
+    <message>
+        <source>Least overlap: axis %1 (%2), %3 mm</source>
+        <translation>Menor solapamiento: eje %1 (%2), %3 mm</translation>
+    </message>
+    <message>
+        <source>B&apos;s best face is better by less than the tolerance, so A&apos;s face stays the reference: resting stacks do not swap faces on rounding noise.</source>
+        <translation>El mejor lado de B es mejor por menos que la tolerancia, así que el lado de A sigue siendo la referencia: las pilas en reposo no cambian de lado por el ruido de redondeo.</translation>
+    </message>
+    <message>
+        <source>Minimum translation vector: %1 mm along %2 (moves B off A)</source>
+        <translation>Vector mínimo de traslación: %1 mm a lo largo de %2 (aparta B de A)</translation>
+    </message>
+    <message>
+        <source>Reference face (green): face %1 of %2; incident face (purple): face %3 of %4</source>
+        <translation>Lado de referencia (verde): lado %1 de %2; lado incidente (morado): lado %3 de %4</translation>
+    </message>
+    <message>
+        <source>The incident face lies beyond the reference face&apos;s ends (corner to corner): one point.</source>
+        <translation>El lado incidente queda más allá de los extremos del lado de referencia (vértice contra vértice): un punto.</translation>
+    </message>
+    <message>
+        <source>Clipped to the reference face&apos;s sides: %1 points; kept (touching): %2</source>
+        <translation>Recortado a los límites laterales del lado de referencia: %1 puntos; conservados (en contacto): %2</translation>
+    </message>
+    <message>
+        <source>Contact point %1: %2 m, separation %3 mm</source>
+        <translation>Punto de contacto %1: %2 m, separación %3 mm</translation>
+    </message>
+    <message>
+        <source>N: next axis   P: previous   Esc: close</source>
+        <translation>N: eje siguiente   P: anterior   Esc: cerrar</translation>
     </message>
 </context>
 <context>

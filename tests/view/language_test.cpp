@@ -14,6 +14,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QFile>
+#include <QHash>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -23,6 +24,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <initializer_list>
 #include <variant>
 
 using impetus::view::MainWindow;
@@ -51,6 +53,38 @@ QStringList menuEntries(MainWindow& window, const QString& title)
                 if (!entry->isSeparator())
                     entries << entry->text();
     return entries;
+}
+
+/// The letter after the single `&` of `text` (its keyboard mnemonic), lower-cased; null when none.
+QChar mnemonic(const QString& text)
+{
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+        if (text[i] != QLatin1Char('&'))
+            continue;
+        if (text[i + 1] != QLatin1Char('&'))
+            return text[i + 1].toLower();
+        ++i; // "&&" is a literal ampersand, not a mnemonic.
+    }
+    return {};
+}
+
+/// "menu: letter shared by A and B" for each mnemonic two entries of `actions` share.
+QStringList mnemonicClashes(const QString& menu, const QList<QAction*>& actions)
+{
+    QStringList clashes;
+    QHash<QChar, QString> owner;
+    for (const QAction* action : actions) {
+        if (action->isSeparator() || !action->isVisible())
+            continue;
+        const QChar letter = mnemonic(action->text());
+        if (letter.isNull())
+            continue;
+        if (owner.contains(letter))
+            clashes << QStringLiteral("%1: %2 shared by %3 and %4").arg(menu, letter, owner[letter], action->text());
+        else
+            owner.insert(letter, action->text());
+    }
+    return clashes;
 }
 
 /// The status bar label whose accessible name is `name`, or nullptr.
@@ -97,6 +131,8 @@ private slots:
     void cleanup();
     void germanWindowHasGermanMenus();
     void spanishWindowHasSpanishMenus();
+    void newerMenusSpeakTheLanguage();
+    void menuLettersAreUniqueInEachMenu();
     void englishNeedsNoTranslation();
     void numbersFollowTheLocaleButSceneFilesDoNot();
     void languageMenuKeepsTheChoiceForTheNextStart();
@@ -144,6 +180,53 @@ void LanguageTest::spanishWindowHasSpanishMenus()
         QVERIFY2(titles.contains(QString::fromUtf8(title)), qPrintable(titles.join(QLatin1Char('|'))));
     QCOMPARE(window.stepAction()->text(), QStringLiteral("Paso"));
     QVERIFY(menuEntries(window, QStringLiteral("E&jemplos")).contains(QStringLiteral("Péndulo")));
+}
+
+void LanguageTest::newerMenusSpeakTheLanguage()
+{
+    // Explain (SAT explainer, collision inspector) and View's energy ledger and integrator ghosts
+    // came after the first translations; a user reads them in the window's language too.
+    struct Expected {
+        const char* code;
+        const char* view;
+        const char* explain;
+        std::initializer_list<const char*> explainEntries;
+        std::initializer_list<const char*> viewEntries;
+    };
+    const Expected languages[] = {
+        {"de", "&Ansicht", "&Erklären", {"&Trennende Achsen", "&Stoßinspektor"},
+         {"Energie&bilanz", "&Integratoren vergleichen"}},
+        {"es", "&Ver", "E&xplicar", {"&Ejes separadores", "&Inspector de colisiones"},
+         {"&Balance de energía", "&Comparar integradores"}},
+    };
+    for (const Expected& language : languages) {
+        QVERIFY(startIn(QString::fromLatin1(language.code)));
+        MainWindow window;
+        const QString explain = QString::fromUtf8(language.explain);
+        QVERIFY2(menuTitles(window).contains(explain), qPrintable(menuTitles(window).join(QLatin1Char('|'))));
+        const QStringList explainEntries = menuEntries(window, explain);
+        for (const char* entry : language.explainEntries)
+            QVERIFY2(explainEntries.contains(QString::fromUtf8(entry)), qPrintable(explainEntries.join(QLatin1Char('|'))));
+        const QStringList viewEntries = menuEntries(window, QString::fromUtf8(language.view));
+        for (const char* entry : language.viewEntries)
+            QVERIFY2(viewEntries.contains(QString::fromUtf8(entry)), qPrintable(viewEntries.join(QLatin1Char('|'))));
+    }
+}
+
+void LanguageTest::menuLettersAreUniqueInEachMenu()
+{
+    // A translated menu whose entries share an underlined letter makes Alt+letter cycle instead of
+    // choosing: each menu, and the menu bar, must give every entry a letter of its own.
+    QStringList clashes;
+    for (const char* code : {"de", "es"}) {
+        QVERIFY(startIn(QString::fromLatin1(code)));
+        MainWindow window;
+        const QString prefix = QString::fromLatin1(code) + QLatin1String(", ");
+        clashes << mnemonicClashes(prefix + QStringLiteral("menu bar"), window.menuBar()->actions());
+        for (QMenu* menu : window.findChildren<QMenu*>())
+            clashes << mnemonicClashes(prefix + menu->title(), menu->actions());
+    }
+    QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1String("; "))));
 }
 
 void LanguageTest::englishNeedsNoTranslation()
