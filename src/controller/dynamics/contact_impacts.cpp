@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 namespace impetus::controller {
 
@@ -102,21 +103,32 @@ struct GapAt {
     Scalar velocity = 0; ///< relative normal velocity then, without the smooth forces' share, m/s
 };
 
-GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
-                      Scalar tau0, Scalar h, const ContactSolver& impacts)
+/// Where point p's two surface points are at τ·h, world frame, m: each moved and turned with its
+/// body as solveImpacts has left it so far (they meet at the time of impact).
+std::pair<Vec2, Vec2> surfacePointsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
+                                      std::span<const SolverBody> bodies, Scalar tau, Scalar h,
+                                      const ContactSolver& impacts)
 {
     const SolverBody& a = bodies[c.bodyA];
     const SolverBody& b = bodies[c.bodyB];
     const Vec2 surfaceA = p.rA - 0.5 * p.separation * c.normal;
     const Vec2 surfaceB = p.rB + 0.5 * p.separation * c.normal;
-    const Scalar turnA = impacts.turnAt(c.bodyA, a, tau0, h);
-    const Scalar turnB = impacts.turnAt(c.bodyB, b, tau0, h);
-    const Vec2 nowA = impacts.positionAt(c.bodyA, a, tau0, h) + rotate(surfaceA, turnA);
-    const Vec2 nowB = impacts.positionAt(c.bodyB, b, tau0, h) + rotate(surfaceB, turnB);
+    return {impacts.positionAt(c.bodyA, a, tau, h) + rotate(surfaceA, impacts.turnAt(c.bodyA, a, tau, h)),
+            impacts.positionAt(c.bodyB, b, tau, h) + rotate(surfaceB, impacts.turnAt(c.bodyB, b, tau, h))};
+}
+
+GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
+                      Scalar tau0, Scalar h, const ContactSolver& impacts)
+{
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    const auto [nowA, nowB] = surfacePointsAt(c, p, bodies, tau0, h, impacts);
     const Scalar elapsed = tau0 * h;
     GapAt result;
     result.gap = (nowB - nowA).dot(c.normal) + 0.5 * p.normalAcceleration * elapsed * elapsed;
-    result.velocity = relativeVelocity(a, b, rotate(p.rA, turnA), rotate(p.rB, turnB)).dot(c.normal);
+    result.velocity = relativeVelocity(a, b, rotate(p.rA, impacts.turnAt(c.bodyA, a, tau0, h)),
+                                       rotate(p.rB, impacts.turnAt(c.bodyB, b, tau0, h)))
+                          .dot(c.normal);
     return result;
 }
 
@@ -297,14 +309,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         // speed it answers all use one point.
         const Vec2 centreA = positionAt(c.bodyA, a, tau, h);
         const Vec2 centreB = positionAt(c.bodyB, b, tau, h);
-        const Scalar turnA = turnAt(c.bodyA, a, tau, h);
-        const Scalar turnB = turnAt(c.bodyB, b, tau, h);
         for (int i = 0; i < count; ++i) {
             ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const ContactConstraintPoint& p = c.points[ip.index];
-            // The two surface points, which meet at the time of impact, each where its body took it.
-            const Vec2 surfaceA = centreA + rotate(Vec2(p.rA - 0.5 * p.separation * c.normal), turnA);
-            const Vec2 surfaceB = centreB + rotate(Vec2(p.rB + 0.5 * p.separation * c.normal), turnB);
+            const auto [surfaceA, surfaceB] = surfacePointsAt(c, p, bodies, tau, h, *this);
             const Vec2 common = 0.5 * (surfaceA + surfaceB);
             ip.tau = tau;
             ip.rA = common - centreA;
