@@ -105,6 +105,13 @@ struct GapAt {
 
 /// Where point p's two surface points are at τ·h, world frame, m: each moved and turned with its
 /// body as solveImpacts has left it so far (they meet at the time of impact).
+/// A rigid circle's surface point facing the other piece stays facing it however the circle
+/// turns (ContactSolver::refresh does the same): only other shapes' surface points turn.
+Scalar surfaceTurnAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h, const ContactSolver& impacts)
+{
+    return body.round > 0 ? 0 : impacts.turnAt(index, body, tau, h);
+}
+
 std::pair<Vec2, Vec2> surfacePointsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
                                       std::span<const SolverBody> bodies, Scalar tau, Scalar h,
                                       const ContactSolver& impacts)
@@ -113,22 +120,40 @@ std::pair<Vec2, Vec2> surfacePointsAt(const ContactConstraint& c, const ContactC
     const SolverBody& b = bodies[c.bodyB];
     const Vec2 surfaceA = p.rA - 0.5 * p.separation * c.normal;
     const Vec2 surfaceB = p.rB + 0.5 * p.separation * c.normal;
-    return {impacts.positionAt(c.bodyA, a, tau, h) + rotate(surfaceA, impacts.turnAt(c.bodyA, a, tau, h)),
-            impacts.positionAt(c.bodyB, b, tau, h) + rotate(surfaceB, impacts.turnAt(c.bodyB, b, tau, h))};
+    return {impacts.positionAt(c.bodyA, a, tau, h) + rotate(surfaceA, surfaceTurnAt(c.bodyA, a, tau, h, impacts)),
+            impacts.positionAt(c.bodyB, b, tau, h) + rotate(surfaceB, surfaceTurnAt(c.bodyB, b, tau, h, impacts))};
+}
+
+/// The lever arms from each body's centre at τ·h to the point half-way between p's two surface
+/// points then, m: where an impact at τ·h acts (solveImpacts), so where its approach is measured.
+std::pair<Vec2, Vec2> impactArmsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
+                                   std::span<const SolverBody> bodies, Scalar tau, Scalar h,
+                                   const ContactSolver& impacts)
+{
+    const auto [surfaceA, surfaceB] = surfacePointsAt(c, p, bodies, tau, h, impacts);
+    const Vec2 common = 0.5 * (surfaceA + surfaceB);
+    return {common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau, h),
+            common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau, h)};
 }
 
 GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
                       Scalar tau0, Scalar h, const ContactSolver& impacts)
 {
-    const SolverBody& a = bodies[c.bodyA];
-    const SolverBody& b = bodies[c.bodyB];
     const auto [nowA, nowB] = surfacePointsAt(c, p, bodies, tau0, h, impacts);
     const Scalar elapsed = tau0 * h;
     GapAt result;
     result.gap = (nowB - nowA).dot(c.normal) + 0.5 * p.normalAcceleration * elapsed * elapsed;
-    result.velocity = relativeVelocity(a, b, rotate(p.rA, impacts.turnAt(c.bodyA, a, tau0, h)),
-                                       rotate(p.rB, impacts.turnAt(c.bodyB, b, tau0, h)))
-                          .dot(c.normal);
+    // The contact's arms turned with the bodies, except a circle's, whose point facing the other
+    // piece stays facing it: turned with a circle spinning at 21 rad/s, it measured an approach
+    // where the impact, at the point between the surfaces, found the two separating.
+    // At the arms an impact at τ₀ would use (impactArmsAt): measured anywhere else, a turning
+    // body's approach differs from what the impact then finds. A circle spinning at 21 rad/s
+    // against a wall, its arm turned with it, was found approaching here and separating there,
+    // and struck again and again with almost no impulse, up to the pass's cap.
+    const Vec2 common = 0.5 * (nowA + nowB);
+    const Vec2 armA = common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau0, h);
+    const Vec2 armB = common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau0, h);
+    result.velocity = relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], armA, armB).dot(c.normal);
     return result;
 }
 
@@ -267,7 +292,6 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         if (top.version != m_versions[top.constraint])
             continue;
         const std::size_t best = top.constraint;
-        ++resolved;
 
         ContactConstraint& c = m_constraints[best];
         SolverBody& a = bodies[c.bodyA];
@@ -307,16 +331,11 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         // review point 2). The impulse acts half-way between the two surface points, and the
         // approach is measured at those arms, so that the impulse, its effective mass and the
         // speed it answers all use one point.
-        const Vec2 centreA = positionAt(c.bodyA, a, tau, h);
-        const Vec2 centreB = positionAt(c.bodyB, b, tau, h);
         for (int i = 0; i < count; ++i) {
             ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const ContactConstraintPoint& p = c.points[ip.index];
-            const auto [surfaceA, surfaceB] = surfacePointsAt(c, p, bodies, tau, h, *this);
-            const Vec2 common = 0.5 * (surfaceA + surfaceB);
             ip.tau = tau;
-            ip.rA = common - centreA;
-            ip.rB = common - centreB;
+            std::tie(ip.rA, ip.rB) = impactArmsAt(c, p, bodies, tau, h, *this);
             ip.velocity = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) + p.normalAcceleration * tau * h;
         }
 
@@ -345,6 +364,12 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             count = 1;
         }
         const Eigen::Vector2d x = solveTwoPointLcp(k, count == 2 ? Eigen::Matrix2d(k.inverse()) : k, bias, count);
+        // No point approaches at the impact's own arms: nothing happens, and nothing changed that
+        // could make the contact approach later, so it leaves the queue. (Put back, it would be
+        // found approaching and struck with no impulse until the pass's cap.)
+        if (!(x(0) > 0) && (count < 2 || !(x(1) > 0)))
+            continue;
+        ++resolved;
 
         const Vec2 t = tangentOf(c.normal);
         // The collision inspector's record (none in a normal step): the state before the impulses.
@@ -500,6 +525,8 @@ Scalar ContactSolver::turnAt(std::uint32_t index, const SolverBody& body, Scalar
 {
     // As positionAt, for the angle: τh·ω − h·Σⱼ min(τ, τⱼ)·Δωⱼ from the step's start.
     Scalar turn = (tau * h) * body.angularVelocity;
+    if (tau >= body.lastImpactTau) // after every impact so far: Σⱼ min(τ, τⱼ)·Δωⱼ = Σⱼ τⱼ·Δωⱼ
+        return turn - h * body.impactLateAngularVelocity;
     for (std::uint32_t k = m_lastTimedImpulse[index]; k != kNoImpulse; k = m_impulseTimeline[k].previous)
         turn -= (h * std::min(tau, m_impulseTimeline[k].tau)) * m_impulseTimeline[k].angularVelocityChange;
     return turn;
@@ -510,6 +537,11 @@ Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scal
     // x(τ) = x₀ + τh·v₀ + Σⱼ max(0, τ − τⱼ)·h·Δvⱼ, written with the current velocity
     // v = v₀ + Σⱼ Δvⱼ as x₀ + τh·v − h·Σⱼ min(τ, τⱼ)·Δvⱼ, over this body's impulses only.
     Vec2 x = body.position + (tau * h) * body.velocity;
+    // The common case, and the only one solveImpacts asks for: τ at or after every impact so far
+    // (a body's impacts come in time order), where Σⱼ min(τ, τⱼ)·Δvⱼ = Σⱼ τⱼ·Δvⱼ, which the body
+    // keeps summed. Walking the body's impulses instead made a body struck n times cost O(n²).
+    if (tau >= body.lastImpactTau)
+        return x - h * body.impactLateVelocity;
     for (std::uint32_t k = m_lastTimedImpulse[index]; k != kNoImpulse; k = m_impulseTimeline[k].previous)
         x -= (h * std::min(tau, m_impulseTimeline[k].tau)) * m_impulseTimeline[k].velocityChange;
     return x;
