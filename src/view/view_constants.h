@@ -34,6 +34,10 @@ inline constexpr double kMaxBatchWallTimeMs = 12.0;
 /// painting and answering.
 inline constexpr int kStepWaitMs = 100;
 
+/// Hardware threads that the GUI thread and the step worker's thread take, one each: the engine's
+/// second thread (SolverSettings::secondThread) is used only on a machine with more than this.
+inline constexpr unsigned kCoresForGuiAndWorker = 2;
+
 /// The runner measures how a run keeps up with the wall clock over windows of this much running
 /// wall time, s: long enough to hold several frames and batches, short enough for the window to
 /// say within a second that the simulation runs slower than real time.
