@@ -17,6 +17,8 @@ namespace impetus::controller {
 
 using detail::fastestApproach;
 using detail::kMaxBlockConditionNumber;
+using detail::kMaxImpactVisitsPerContact;
+using detail::kMinImpactVisits;
 using detail::tangentOf;
 
 namespace {
@@ -285,7 +287,9 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     }
 
     int resolved = 0;
-    while (!heap.empty() && static_cast<std::size_t>(resolved) < maxImpacts) {
+    std::size_t visits = 0; // contacts looked at again after an impact
+    const std::size_t maxVisits = std::max(kMinImpactVisits, kMaxImpactVisitsPerContact * m_constraints.size());
+    while (!heap.empty() && static_cast<std::size_t>(resolved) < maxImpacts && visits < maxVisits) {
         std::pop_heap(heap.begin(), heap.end(), later);
         const Candidate top = heap.back();
         heap.pop_back();
@@ -470,6 +474,7 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
                 ++m_versions[cj];
                 consider(cj);
             }
+            visits += m_bodyConstraintStart[body + 1] - m_bodyConstraintStart[body];
         }
     }
     if (resolved > 0)
