@@ -18,6 +18,7 @@ namespace {
 using model::IntegratorKind;
 using testing::makeBall;
 using testing::makeEmptyWorld;
+using testing::makeGround;
 using testing::withMaterial;
 
 /// Three equal elastic balls on a line in zero gravity: the first, at speed v, meets the second
@@ -150,6 +151,42 @@ TEST_P(ImpactArms, TheImpactPushesAtThePointWhoseApproachItAnswers)
     EXPECT_NEAR(point.rB.dot(tangent), 0.5 * (cornerAtStart + cornerTurned).dot(tangent), 1e-12);
     // Elastic and frictionless: the kinetic energy after the step is the energy before.
     EXPECT_NEAR(computeEnergy(world).kinetic, before, 1e-12 * before);
+}
+
+// A circle that slides far along a wall within the step before it meets it (soak seed 176: 600 m/s
+// along the ceiling, spinning at 800 rad/s) is struck at its own point facing the wall. The
+// contact's two surface points were matched at the step's start: half-way between the wall's,
+// left behind, and the circle's, a metre on, the impact acted off the circle's normal line, where
+// its spin made up a normal approach of 400 m/s; the "bounce" sent it into the wall.
+TEST_P(ImpactArms, SlidingSpinningCircleIsStruckAtItsFacingPoint)
+{
+    const Scalar h = 1.0 / 240;
+    const Scalar radius = 0.05;
+    const Scalar approach = 10; // m/s towards the floor
+    const Scalar slide = 500; // m/s along it
+    const Scalar spin = 800; // rad/s
+    const Scalar restitution = 0.95;
+    const Scalar gap = 0.02; // m: meets the floor at τ = gap / (approach·h) = 0.48
+    model::World world = makeEmptyWorld(GetParam(), h);
+    world.bodies.push_back(withMaterial(makeGround("floor", 20, 2, Vec2(4, 0)), restitution, 0));
+    model::Body ball = withMaterial(makeBall("ball", 0.018, radius, Vec2(0, radius + gap), Vec2(slide, -approach)),
+                                    restitution, 0);
+    ball.state.angularVelocity = spin;
+    world.bodies.push_back(ball);
+    Simulation simulation(settingsUnderTest());
+    std::vector<ImpactRecord> log;
+    simulation.setImpactLog(&log);
+    simulation.step(world);
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_NEAR(log[0].points[0].tau, gap / (approach * h), 1e-9);
+    EXPECT_NEAR(log[0].points[0].approachSpeed, -approach, 1e-9);
+    // Frictionless, at the facing point: the normal velocity turns to e times itself, the slide
+    // and the spin stay (before the fix: 398 m/s into the floor, the spin changed).
+    const model::BodyState& after = world.bodies[1].state;
+    EXPECT_NEAR(after.velocity.y(), restitution * approach, 1e-9);
+    EXPECT_NEAR(after.velocity.x(), slide, 1e-9);
+    EXPECT_NEAR(after.angularVelocity, spin, 1e-9);
+    EXPECT_GT(after.position.y(), radius);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, ImpactArms,

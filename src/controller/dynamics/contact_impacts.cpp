@@ -126,14 +126,33 @@ std::pair<Vec2, Vec2> surfacePointsAt(const ContactConstraint& c, const ContactC
             impacts.positionAt(c.bodyB, b, tau, h) + rotate(surfaceB, surfaceTurnAt(c.bodyB, b, tau, h, impacts))};
 }
 
-/// The lever arms from each body's centre at τ·h to the point half-way between p's two surface
-/// points then, m: where an impact at τ·h acts (solveImpacts), so where its approach is measured.
+/// Where an impact acts, world frame, m, given the two surface points of its contact point at its
+/// time: half-way between them, or, when exactly one of the two pieces is a rigid circle, at the
+/// circle's own surface point facing the other piece.
+/// The two surface points were matched at the step's start: a circle that slides fast along the
+/// other piece before it meets it (600 m/s along a wall, soak seed 176) leaves its start's mate
+/// far behind, and the point half-way to it is off the circle's normal line, where the circle's
+/// spin (800 rad/s) made up a normal velocity of hundreds of m/s that the impact then "answered",
+/// sending the circle into the wall. The circle's facing point is where it meets a flat face
+/// wherever it slid to, and on its normal line its spin adds nothing to the approach.
+Vec2 impactPointOf(const ContactConstraint& c, std::span<const SolverBody> bodies, const Vec2& surfaceA,
+                   const Vec2& surfaceB)
+{
+    const bool roundA = bodies[c.bodyA].round > 0;
+    const bool roundB = bodies[c.bodyB].round > 0;
+    if (roundA != roundB)
+        return roundA ? surfaceA : surfaceB;
+    return 0.5 * (surfaceA + surfaceB);
+}
+
+/// The lever arms from each body's centre at τ·h to impactPointOf its surface points then, m:
+/// where an impact at τ·h acts (solveImpacts), so where its approach is measured.
 std::pair<Vec2, Vec2> impactArmsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
                                    std::span<const SolverBody> bodies, Scalar tau, Scalar h,
                                    const ContactSolver& impacts)
 {
     const auto [surfaceA, surfaceB] = surfacePointsAt(c, p, bodies, tau, h, impacts);
-    const Vec2 common = 0.5 * (surfaceA + surfaceB);
+    const Vec2 common = impactPointOf(c, bodies, surfaceA, surfaceB);
     return {common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau, h),
             common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau, h)};
 }
@@ -152,7 +171,7 @@ GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& 
     // body's approach differs from what the impact then finds. A circle spinning at 21 rad/s
     // against a wall, its arm turned with it, was found approaching here and separating there,
     // and struck again and again with almost no impulse, up to the pass's cap.
-    const Vec2 common = 0.5 * (nowA + nowB);
+    const Vec2 common = impactPointOf(c, bodies, nowA, nowB);
     const Vec2 armA = common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau0, h);
     const Vec2 armB = common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau0, h);
     result.velocity = relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], armA, armB).dot(c.normal);
@@ -514,7 +533,12 @@ void ContactSolver::moveArmsToImpactTimes(std::span<SolverBody> bodies, Scalar h
                 ContactConstraintPoint& p = c.points[k];
                 if (tau0 > 0)
                     p.closingGap = gapAtLastImpact(c, p, bodies, tau0, h, *this).gap / remaining;
-                const Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
+                // One point for both bodies, chosen as the impacts choose it (impactPointOf): a
+                // sole circle's own facing point, else half-way between the two surface points,
+                // summed in the order it always was so that no other contact changes by a bit.
+                Vec2 common = 0.5 * (originA + p.rA + originB + p.rB);
+                if ((a.round > 0) != (b.round > 0))
+                    common = a.round > 0 ? Vec2(originA + p.rA) : Vec2(originB + p.rB);
                 p.rA = common - originA;
                 p.rB = common - originB;
                 p.normalMass = effectiveMass(a, b, p.rA, p.rB, c.normal);
