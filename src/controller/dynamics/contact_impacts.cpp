@@ -105,25 +105,11 @@ struct GapAt {
     Scalar velocity = 0; ///< relative normal velocity then, without the smooth forces' share, m/s
 };
 
-/// Where point p's two surface points are at τ·h, world frame, m: each moved and turned with its
-/// body as solveImpacts has left it so far (they meet at the time of impact).
 /// A rigid circle's surface point facing the other piece stays facing it however the circle
 /// turns (ContactSolver::refresh does the same): only other shapes' surface points turn.
 Scalar surfaceTurnAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h, const ContactSolver& impacts)
 {
     return body.round > 0 ? 0 : impacts.turnAt(index, body, tau, h);
-}
-
-std::pair<Vec2, Vec2> surfacePointsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
-                                      std::span<const SolverBody> bodies, Scalar tau, Scalar h,
-                                      const ContactSolver& impacts)
-{
-    const SolverBody& a = bodies[c.bodyA];
-    const SolverBody& b = bodies[c.bodyB];
-    const Vec2 surfaceA = p.rA - 0.5 * p.separation * c.normal;
-    const Vec2 surfaceB = p.rB + 0.5 * p.separation * c.normal;
-    return {impacts.positionAt(c.bodyA, a, tau, h) + rotate(surfaceA, surfaceTurnAt(c.bodyA, a, tau, h, impacts)),
-            impacts.positionAt(c.bodyB, b, tau, h) + rotate(surfaceB, surfaceTurnAt(c.bodyB, b, tau, h, impacts))};
 }
 
 /// Where an impact acts, world frame, m, given the two surface points of its contact point at its
@@ -145,36 +131,45 @@ Vec2 impactPointOf(const ContactConstraint& c, std::span<const SolverBody> bodie
     return 0.5 * (surfaceA + surfaceB);
 }
 
-/// The lever arms from each body's centre at τ·h to impactPointOf its surface points then, m:
-/// where an impact at τ·h acts (solveImpacts), so where its approach is measured.
-std::pair<Vec2, Vec2> impactArmsAt(const ContactConstraint& c, const ContactConstraintPoint& p,
-                                   std::span<const SolverBody> bodies, Scalar tau, Scalar h,
-                                   const ContactSolver& impacts)
+/// Point p of a contact at τ·h of the step, world frame, m: both bodies' centres and p's two
+/// surface points, each moved and turned with its body as solveImpacts has left it so far (the
+/// surface points meet at the time of impact), and the lever arms from the centres to the point
+/// where an impact then acts (impactPointOf), which is also where its approach is measured.
+struct PointAt {
+    Vec2 surfaceA = Vec2::Zero();
+    Vec2 surfaceB = Vec2::Zero();
+    Vec2 armA = Vec2::Zero();
+    Vec2 armB = Vec2::Zero();
+};
+
+PointAt pointAt(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
+                Scalar tau, Scalar h, const ContactSolver& impacts)
 {
-    const auto [surfaceA, surfaceB] = surfacePointsAt(c, p, bodies, tau, h, impacts);
-    const Vec2 common = impactPointOf(c, bodies, surfaceA, surfaceB);
-    return {common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau, h),
-            common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau, h)};
+    const SolverBody& a = bodies[c.bodyA];
+    const SolverBody& b = bodies[c.bodyB];
+    const Vec2 centreA = impacts.positionAt(c.bodyA, a, tau, h);
+    const Vec2 centreB = impacts.positionAt(c.bodyB, b, tau, h);
+    PointAt at;
+    at.surfaceA = centreA + rotate(Vec2(p.rA - 0.5 * p.separation * c.normal), surfaceTurnAt(c.bodyA, a, tau, h, impacts));
+    at.surfaceB = centreB + rotate(Vec2(p.rB + 0.5 * p.separation * c.normal), surfaceTurnAt(c.bodyB, b, tau, h, impacts));
+    const Vec2 common = impactPointOf(c, bodies, at.surfaceA, at.surfaceB);
+    at.armA = common - centreA;
+    at.armB = common - centreB;
+    return at;
 }
 
 GapAt gapAtLastImpact(const ContactConstraint& c, const ContactConstraintPoint& p, std::span<const SolverBody> bodies,
                       Scalar tau0, Scalar h, const ContactSolver& impacts)
 {
-    const auto [nowA, nowB] = surfacePointsAt(c, p, bodies, tau0, h, impacts);
+    const PointAt now = pointAt(c, p, bodies, tau0, h, impacts);
     const Scalar elapsed = tau0 * h;
     GapAt result;
-    result.gap = (nowB - nowA).dot(c.normal) + 0.5 * p.normalAcceleration * elapsed * elapsed;
-    // The contact's arms turned with the bodies, except a circle's, whose point facing the other
-    // piece stays facing it: turned with a circle spinning at 21 rad/s, it measured an approach
-    // where the impact, at the point between the surfaces, found the two separating.
-    // At the arms an impact at τ₀ would use (impactArmsAt): measured anywhere else, a turning
-    // body's approach differs from what the impact then finds. A circle spinning at 21 rad/s
-    // against a wall, its arm turned with it, was found approaching here and separating there,
-    // and struck again and again with almost no impulse, up to the pass's cap.
-    const Vec2 common = impactPointOf(c, bodies, nowA, nowB);
-    const Vec2 armA = common - impacts.positionAt(c.bodyA, bodies[c.bodyA], tau0, h);
-    const Vec2 armB = common - impacts.positionAt(c.bodyB, bodies[c.bodyB], tau0, h);
-    result.velocity = relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], armA, armB).dot(c.normal);
+    result.gap = (now.surfaceB - now.surfaceA).dot(c.normal) + 0.5 * p.normalAcceleration * elapsed * elapsed;
+    // At the arms an impact at τ₀ would use: measured anywhere else, a turning body's approach
+    // differs from what the impact then finds. A circle spinning at 21 rad/s against a wall, its
+    // arm turned with it, was found approaching here and separating there, and struck again and
+    // again with almost no impulse, up to the pass's cap.
+    result.velocity = relativeVelocity(bodies[c.bodyA], bodies[c.bodyB], now.armA, now.armB).dot(c.normal);
     return result;
 }
 
@@ -351,14 +346,17 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         }
         tau = std::max({tau, a.lastImpactTau, b.lastImpactTau});
         // Each body has moved and turned by then: its surface point turns with it (issue 16,
-        // review point 2). The impulse acts half-way between the two surface points, and the
-        // approach is measured at those arms, so that the impulse, its effective mass and the
-        // speed it answers all use one point.
+        // review point 2). The impulse acts at one point for both bodies (pointAt: half-way
+        // between the two surface points, or a sole circle's own), and the approach is measured
+        // at those arms, so that the impulse, its effective mass and the speed it answers all use
+        // one point.
         for (int i = 0; i < count; ++i) {
             ImpactPoint& ip = points[static_cast<std::size_t>(i)];
             const ContactConstraintPoint& p = c.points[ip.index];
             ip.tau = tau;
-            std::tie(ip.rA, ip.rB) = impactArmsAt(c, p, bodies, tau, h, *this);
+            const PointAt at = pointAt(c, p, bodies, tau, h, *this);
+            ip.rA = at.armA;
+            ip.rB = at.armB;
             ip.velocity = relativeVelocity(a, b, ip.rA, ip.rB).dot(c.normal) + p.normalAcceleration * tau * h;
         }
 
