@@ -657,10 +657,10 @@ void printTable(const Scene& scene, const std::vector<const Run*>& rows)
         if (r->id == "box2d3")
             v3Cost = msPerSimulatedSecond(*r);
     }
-    std::cout << "| engine    | step | steps | ms/step mean | ms/step median | ms per simulated s | x Impetus | x v3 |"
+    std::cout << "| engine    | step | steps | ms/step mean | ms/step median | slowest ÷ median | ms per simulated s | x Impetus | x v3 |"
               << (pyramids ? " top drift (m) | top drop (m) |" : "") << " deepest overlap (m) |"
               << (joints ? " worst joint gap (m) |" : "") << "\n"
-              << "|-----------|------|------:|-------------:|---------------:|-------------------:|----------:|-----:|"
+              << "|-----------|------|------:|-------------:|---------------:|-----------------:|-------------------:|----------:|-----:|"
               << (pyramids ? "--------------:|-------------:|" : "") << "--------------------:|"
               << (joints ? "--------------------:|" : "") << "\n";
     const std::string noValue = "-";
@@ -678,10 +678,13 @@ void printTable(const Scene& scene, const std::vector<const Run*>& rows)
         std::cout << "| " << engineCell << " | " << describeSettings(*r) << " | " << stepsCell << " | ";
         if (!timed(*r)) {
             std::cout << noValue << " | " << noValue << " | " << noValue << " | " << noValue << " | " << noValue
-                      << " |";
+                      << " | " << noValue << " |";
         } else {
             const double cost = msPerSimulatedSecond(*r);
-            std::cout << fixed(mean(r->stepMs), 3) << " | " << fixed(median(r->stepMs), 3) << " | " << fixed(cost, 1)
+            const double middle = median(r->stepMs);
+            const double slowest = *std::max_element(r->stepMs.begin(), r->stepMs.end());
+            std::cout << fixed(mean(r->stepMs), 3) << " | " << fixed(middle, 3) << " | "
+                      << (middle > 0 ? fixed(slowest / middle, 1) : noValue) << " | " << fixed(cost, 1)
                       << " | " << (impetusCost > 0 ? significant(cost / impetusCost, 3) : noValue) << " | "
                       << (v3Cost > 0 ? significant(cost / v3Cost, 3) : noValue) << " |";
         }

@@ -164,13 +164,16 @@ void Simulation::collide(const model::World& world, Scalar h)
     // rotation at its bounding radius, and what its acceleration adds), plus a constant margin so
     // that resting contacts exist before the surfaces touch.
     // A body at rest can also be struck and set moving within the step: one impact hands on at
-    // most twice the striker's speed (e ≤ 1), so every dynamic body also gets 2·h times the
-    // fastest body's speed, and a struck ball finds the wall just behind it.
-    // One pass over the bodies: each one's margin without the fastest body's share (its surface
-    // speed computed once, for both), then that share once the fastest is known.
+    // most twice the striker's speed (e ≤ 1), so a body that a striker can reach gets 2·h times
+    // the striker's speed on top, and a struck ball finds the wall just behind it. A small world
+    // gives every dynamic body that share of the fastest body; a large one only the share of the
+    // fastest body that can reach it (addStrikeShares).
+    // One pass over the bodies: each one's margin without the strike share (its surface speed
+    // computed once, for both), then the share.
     // A large world does each half of its bodies on its own thread; the fastest speed is the
     // larger of the halves' (a maximum, so the same either way).
     m_margins.resize(n);
+    m_strikeSpeeds.resize(n);
     std::array<Scalar, 2> fastestOf{};
     const auto ownMargins = [&](std::size_t begin, std::size_t end) {
         Scalar fastest = 0;
@@ -179,8 +182,10 @@ void Simulation::collide(const model::World& world, Scalar h)
             const model::BodyState& s = m_startStates[i];
             const BodyDerivative& d = m_startDerivatives[i];
             const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
-            if (!body.fixed)
-                fastest = std::max(fastest, speed);
+            // A fixed body moves as it was told whatever strikes it, and strikes nothing loose
+            // enough to count: its own margin covers its travel.
+            m_strikeSpeeds[i] = body.fixed ? 0 : speed;
+            fastest = std::max(fastest, m_strikeSpeeds[i]);
             m_margins[i] = constants::kSpeculativeMargin;
             m_margins[i] += h * speed + h * h * (d.acceleration.norm() +
                                                  std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
@@ -196,26 +201,36 @@ void Simulation::collide(const model::World& world, Scalar h)
         fastestOf[0] = ownMargins(0, n);
     }
     Scalar fastest = std::max(fastestOf[0], fastestOf[1]);
-    for (std::size_t i = n; i < m_startStates.size(); ++i)
-        fastest = std::max(fastest, m_startStates[i].velocity.norm());
-    // A soft body's margin is set afresh below.
-    inHalves(tasks, n, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            if (m_entries[i] != Entry::Fixed)
-                m_margins[i] += 2 * h * fastest;
-        }
-    });
-    // A soft body's pieces are its ellipses: its margin is the farthest any of them can move.
+    // A soft body strikes as fast as its fastest ellipse, and its margin is the farthest any of
+    // them can move.
     std::size_t next = n;
     for (const model::SoftGrid& grid : world.softBodies) {
         Scalar travel = 0;
+        Scalar speed = 0;
         for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
+            speed = std::max(speed, m_startStates[next].velocity.norm());
             travel = std::max(travel, h * m_startStates[next].velocity.norm() +
                                           h * h * m_startDerivatives[next].acceleration.norm());
         }
-        m_margins[grid.body.index] = constants::kSpeculativeMargin + travel + 2 * h * fastest;
+        m_margins[grid.body.index] = constants::kSpeculativeMargin + travel;
+        m_strikeSpeeds[grid.body.index] = speed;
+        fastest = std::max(fastest, speed);
     }
-    m_colliders.build(world, m_margins, tasks);
+    const bool local = n >= constants::kLocalStrikeShareMinBodies && 2 * h * fastest > constants::kSpeculativeMargin;
+    if (local) {
+        // The boxes at the bodies' own margins tell which bodies can reach which; each then grows
+        // by its share.
+        m_colliders.build(world, m_margins, tasks);
+        addStrikeShares(world, h);
+    } else {
+        inHalves(tasks, n, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                if (m_entries[i] != Entry::Fixed)
+                    m_margins[i] += 2 * h * fastest;
+            }
+        });
+        m_colliders.build(world, m_margins, tasks);
+    }
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
     if (world.softBodies.empty()) {
         m_proxies.resize(pieces.size());
@@ -263,6 +278,43 @@ void Simulation::collide(const model::World& world, Scalar h)
     // Pairs without contact keep their (empty) slots: ContactSolver::prepare skips them, and
     // moving the others up would copy most of a pile's manifolds on one thread.
     m_profile.narrowMs += millisecondsSince(narrowStart);
+}
+
+void Simulation::addStrikeShares(const model::World& world, Scalar h)
+{
+    // One proxy per dynamic body: the box around its pieces' boxes, each already enlarged by the
+    // body's own margin. Two bodies whose proxies overlap can meet within the step, so each may be
+    // struck by the other. Fixed bodies neither strike (their speed counts for nothing, as in the
+    // world's share) nor are set moving, so they are left out.
+    const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
+    const std::vector<Aabb>& boxes = m_colliders.boxes();
+    m_reachProxies.clear();
+    for (std::size_t i = 0; i < pieces.size();) {
+        const std::uint32_t body = pieces[i].body;
+        Aabb box = boxes[i];
+        for (++i; i < pieces.size() && pieces[i].body == body; ++i) {
+            box.lower = box.lower.cwiseMin(boxes[i].lower);
+            box.upper = box.upper.cwiseMax(boxes[i].upper);
+        }
+        if (!world.bodies[body].fixed)
+            m_reachProxies.push_back(BroadPhaseProxy{box, body, false});
+    }
+    m_reachPhase.findPairs(m_reachProxies, m_reachPairs);
+    // A body's share: 2·h times the fastest body that can reach it. Its own speed is in its own
+    // margin already, and the struck body goes at most twice its striker's speed, so one blow
+    // passed on is covered (as the world's share covers one); the pairs are sorted, and a maximum
+    // does not depend on their order.
+    const std::size_t n = world.bodies.size();
+    m_strikeShares.assign(n, 0);
+    for (const ProxyPair& pair : m_reachPairs) {
+        const std::uint32_t a = m_reachProxies[pair.first].body;
+        const std::uint32_t b = m_reachProxies[pair.second].body;
+        m_strikeShares[a] = std::max(m_strikeShares[a], 2 * h * m_strikeSpeeds[b]);
+        m_strikeShares[b] = std::max(m_strikeShares[b], 2 * h * m_strikeSpeeds[a]);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        m_margins[i] += m_strikeShares[i];
+    m_colliders.enlargeBoxes(m_strikeShares);
 }
 
 void Simulation::findPairsWithSoftBodies(const model::World& world)

@@ -144,6 +144,10 @@ private:
     int substepsFor(model::World& world, bool& collided);
     void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);
+    /// A large world's strike shares (constants::kLocalStrikeShareMinBodies): adds to each
+    /// body's margin, and to its pieces' boxes in m_colliders (built with the bodies' own margins),
+    /// 2·h times the speed of the fastest body whose box reaches its box.
+    void addStrikeShares(const model::World& world, Scalar h);
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
     void findPairsWithSoftBodies(const model::World& world);
     void integratePositions(const model::World& world, Scalar h);
@@ -187,6 +191,13 @@ private:
     std::vector<Vec2> m_scratchVelocities;
     SoftDampingScratch m_dampingScratch; ///< the soft grids' damping pass's working arrays
     std::vector<Scalar> m_margins;
+    /// Per body, the speed (m/s) at which it can strike another: 0 for a fixed body, a soft
+    /// body's fastest ellipse's.
+    std::vector<Scalar> m_strikeSpeeds;
+    std::vector<Scalar> m_strikeShares; ///< per body, what addStrikeShares adds to its margin, m
+    std::vector<BroadPhaseProxy> m_reachProxies; ///< per dynamic body, the box of its pieces
+    std::vector<ProxyPair> m_reachPairs;
+    BroadPhase m_reachPhase; ///< which bodies can reach which (addStrikeShares); its own cache
     std::vector<BroadPhaseProxy> m_proxies;
     std::vector<ProxyPair> m_pairs;
     std::vector<ProxyPair> m_coarsePairs; ///< with soft bodies: pairs of bodies or rigid pieces

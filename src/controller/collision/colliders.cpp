@@ -116,6 +116,12 @@ void ColliderSet::build(const model::World& world, const std::vector<Scalar>& ma
     }
 }
 
+void ColliderSet::enlargeBoxes(const std::vector<Scalar>& extra)
+{
+    for (std::size_t i = 0; i < m_pieces.size(); ++i)
+        m_boxes[i] = enlarged(m_boxes[i], extra[m_pieces[i].body]);
+}
+
 void ColliderSet::place(const model::World& world, const std::vector<Scalar>& margins, std::uint32_t begin,
                         std::uint32_t end, Cursor at)
 {

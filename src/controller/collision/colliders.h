@@ -44,6 +44,9 @@ public:
     /// With `tasks`, each half of the bodies is placed on its own thread (the same result).
     void build(const model::World& world, const std::vector<Scalar>& margins, TaskPair* tasks = nullptr);
 
+    /// Enlarges the box of each piece of body i by `extra[i]` (m) on every side.
+    void enlargeBoxes(const std::vector<Scalar>& extra);
+
     /// Every piece, by body in index order, then by piece.
     const std::vector<ColliderPiece>& pieces() const { return m_pieces; }
     /// The bounding box of each piece (same index as pieces()), enlarged by its margin, m.
