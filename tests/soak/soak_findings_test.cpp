@@ -44,11 +44,13 @@ std::string seedName(const ::testing::TestParamInfo<std::uint64_t>& seed)
 // its own facing point (contact_impacts.cpp, impactPointOf). 65 and 86 no longer failed at main's
 // 30e9f6e, before that fix (in the release build and the sanitized soak alike). 18, 27, 49, 51,
 // 61, 66, 69, 87, 121 and 195, jointed scenes that gained energy or left the box, by joints that
-// no longer close their error with velocity (joint_solver.cpp, solveVelocities).
+// no longer close their error with velocity (joint_solver.cpp, solveVelocities). 144 and 191, a
+// light body on a short rod sent off at thousands of m/s by passes that pulled the wrong way, by
+// the rod's pass holding the velocity along the rod there instead.
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values(2, 3, 4, 8, 17, 18, 27, 30, 49, 51, 61, 65, 66, 68, 69, 86, 87, 117,
-                                           121, 136, 141, 142, 145, 146, 149, 153, 166, 176, 182, 183, 188, 193,
-                                           195),
+                                           121, 136, 141, 142, 144, 145, 146, 149, 153, 166, 176, 182, 183, 188,
+                                           191, 193, 195),
                          seedName);
 
 // Open (soak/known_findings.txt).
@@ -56,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding,
                          // 104, 111 and 140 pass in the sanitized soak build (-O1). In this one (-O3) 111 fails
                          // since the joints keep their error, and 104 or 140 failed before: the scenes are
                          // chaotic and the two builds round differently.
-                         ::testing::Values(92, 104, 111, 131, 140, 144, 177, 189, 191),
+                         ::testing::Values(92, 104, 111, 131, 140, 177, 189),
                          seedName);
 
 } // namespace
