@@ -634,12 +634,12 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     // and contacts on a rigid body do. (Handed on once at the end, the joints kept pulling at a
     // resting body that the contacts had already stopped.)
     const bool softJoints = !world.softBodies.empty() && !m_jointSolver.empty();
-    const auto onSoftAggregates = [&](auto&& jointWork) {
+    const auto onSoftAggregates = [&](auto&& jointWork, bool positions = false) {
         if (softJoints)
             syncSoftAggregates(world);
         jointWork();
         if (softJoints)
-            shareJointMotion(world, false);
+            shareJointMotion(world, positions);
     };
     if (m_ledger)
         m_ledger->beforeVelocities(m_bodies, m_contactSolver.constraints());
@@ -668,14 +668,17 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     integratePositions(world, h);
     if (m_ledger)
         m_ledger->beforeCorrection(world, m_endStates);
-    if (!world.softBodies.empty() && !m_jointSolver.empty())
-        syncSoftAggregates(world);
     m_contactSolver.beginPositions();
     m_jointSolver.beginPositions();
     for (int i = 0; i < m_settings.positionIterations; ++i) {
         if (m_ledger)
             m_ledger->beforeJointCorrection(world, m_bodies);
-        const bool jointsOk = m_jointSolver.solvePositions(m_bodies);
+        // As in the velocity passes: the joints move a soft body's aggregate from where the
+        // contacts have left its ellipses, and the ellipses follow before the contacts' pass.
+        // (Handed on once after all passes, the joints' moves came after the contacts' last
+        // word and pushed ellipses into a wall: soak seed 111.)
+        bool jointsOk = false;
+        onSoftAggregates([&] { jointsOk = m_jointSolver.solvePositions(m_bodies); }, true);
         if (m_ledger)
             m_ledger->afterJointCorrection(world, m_bodies);
         const bool contactsOk = m_contactSolver.solvePositions(m_bodies, i == 0 || !m_jointSolver.empty());
@@ -688,13 +691,16 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     // turning the relative velocity of two boxes side by side in a settling stack would make them
     // approach, and a stack under gravity keeps the exact motion it had.
     if (world.settings.gravity.isZero()) {
-        m_contactSolver.measurePushes(m_bodies);
-        m_jointSolver.measurePushes(m_bodies);
-        m_contactSolver.takeBackPushes(m_bodies);
-        m_jointSolver.takeBackPushes(m_bodies);
+        // A joint's take-back turns a soft body's aggregate velocity, which its ellipses must
+        // follow as they follow the velocity passes; kept on the aggregate alone it was lost, and
+        // only the rigid partner's half turned: soak seed 189 gained energy every step.
+        onSoftAggregates([&] {
+            m_contactSolver.measurePushes(m_bodies);
+            m_jointSolver.measurePushes(m_bodies);
+            m_contactSolver.takeBackPushes(m_bodies);
+            m_jointSolver.takeBackPushes(m_bodies);
+        });
     }
-    if (!world.softBodies.empty() && !m_jointSolver.empty())
-        shareJointMotion(world, true);
     inHalves(bodyTasks(world), total, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             if (m_entries[i] == Entry::Fixed || m_entries[i] == Entry::SoftOwner)

@@ -1,5 +1,6 @@
 // Pin and rod joints against pendulum theory.
 
+#include "controller/diagnostics.h"
 #include "controller/simulation.h"
 #include "controller/solver_under_test.h"
 #include "model/constants.h"
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -176,6 +178,65 @@ TEST(PinJoint, HoldsTwoBodiesTogether)
     const Vec2 p = world.bodies[0].state.velocity * 1.0 + world.bodies[1].state.velocity * 2.0;
     EXPECT_NEAR((p - p0).norm(), 0.0, 1e-9);
     EXPECT_GT(std::abs(world.bodies[0].state.angularVelocity), 0.1); // the pair spins
+}
+
+// A joint left open (by a fast turn, an impact, passes that stopped short) is closed by the
+// position passes, which move the bodies and give them no speed. The velocity passes used to
+// close it instead: a gap d closed in one step asks for d/h of speed, which the bodies keep when
+// the step ends, and the random-scene soak's jointed scenes gained energy without bound or left
+// their box (issue 16). Two boxes at rest in zero gravity, their pin's anchors 0.6 m apart, or
+// their 0.3 m rod between anchors 0.6 m apart: nothing acts on them but the joint, which does no
+// work, so they close it and stay at rest.
+TEST(Joints, CloseAnOpenJointWithoutSettingTheBodiesMoving)
+{
+    for (const model::JointType type : {model::JointType::Pin, model::JointType::Rod}) {
+        model::World world = makeEmptyWorld(IntegratorKind::SemiImplicitEuler, 1.0 / 240.0);
+        world.bodies.push_back(makeBox("a", 1.0, 0.4, 0.4, Vec2(-0.5, 0)));
+        world.bodies.push_back(makeBox("b", 2.0, 0.4, 0.4, Vec2(0.5, 0)));
+        model::Joint joint;
+        joint.type = type;
+        joint.bodyA = model::BodyId{0};
+        joint.bodyB = model::BodyId{1};
+        joint.anchorA = Vec2(0.2, 0); // at (−0.3, 0)
+        joint.anchorB = Vec2(-0.2, 0); // at (0.3, 0)
+        joint.length = 0.3; // the rod's
+        world.joints.push_back(joint);
+        const Scalar closed = type == model::JointType::Pin ? 0.0 : joint.length;
+        Simulation simulation(settingsUnderTest());
+        Scalar fastest = 0;
+        for (int i = 0; i < 240; ++i) {
+            simulation.step(world);
+            fastest = std::max(fastest, computeEnergy(world).kinetic);
+        }
+        const Vec2 a = world.bodies[0].worldPoint(joint.anchorA);
+        const Vec2 b = world.bodies[1].worldPoint(joint.anchorB);
+        EXPECT_NEAR((b - a).norm(), closed, 1e-9) << (type == model::JointType::Pin ? "pin" : "rod");
+        // At rest to rounding: before, the pin's bodies left at 96 and 48 m/s (6912 J), and the
+        // rod's velocity passes diverged to non-finite speeds.
+        EXPECT_LT(fastest, 1e-12) << (type == model::JointType::Pin ? "pin" : "rod"); // J
+    }
+}
+
+// A 10 g ball on a 0.1 m rod to the world, going round at 60 m/s: at 1/240 s it moves 0.25 m a
+// step, two and a half times the rod's length, more than a step can follow round. The rod's end
+// condition, solved along the rod's start direction, then pulled the ball's predicted place
+// farther out with every pass, and the ball's speed went non-finite within the first second
+// (soak seeds 144 and 191: a 17 g ball on a 0.34 m rod and a 0.5 kg box on a 0.44 m one left at
+// thousands of m/s). The rod must hold the ball without adding energy, which it cannot gain:
+// nothing else acts on it.
+TEST(RodJoint, HoldsABallGoingRoundFasterThanAStepCanFollowWithoutAddingEnergy)
+{
+    const Scalar length = 0.1;
+    model::World world = makeEmptyWorld(IntegratorKind::SemiImplicitEuler, 1.0 / 240.0);
+    world.bodies.push_back(makeBall("ball", 0.01, 0.02, Vec2(length, 0), Vec2(0, 60)));
+    world.joints.push_back(rodToWorld(0, Vec2::Zero(), length));
+    const Scalar start = computeEnergy(world).kinetic;
+    Simulation simulation(settingsUnderTest());
+    for (int i = 0; i < 240; ++i) {
+        simulation.step(world);
+        ASSERT_LE(computeEnergy(world).kinetic, start * (1 + 1e-12)) << "step " << i;
+    }
+    EXPECT_NEAR(world.bodies[0].state.position.norm(), length, 1e-3);
 }
 
 } // namespace

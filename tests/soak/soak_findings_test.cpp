@@ -42,18 +42,24 @@ std::string seedName(const ::testing::TestParamInfo<std::uint64_t>& seed)
 // at 800 rad/s that slid a metre along the ceiling before meeting it and was struck half-way back
 // to where the contact was found, off its normal line, by the impact pass striking a sole circle at
 // its own facing point (contact_impacts.cpp, impactPointOf). 65 and 86 no longer failed at main's
-// 30e9f6e, before that fix (in the release build and the sanitized soak alike).
+// 30e9f6e, before that fix (in the release build and the sanitized soak alike). 18, 27, 49, 51,
+// 61, 66, 69, 87, 121 and 195, jointed scenes that gained energy or left the box, by joints that
+// no longer close their error with velocity (joint_solver.cpp, solveVelocities). 144 and 191, a
+// light body on a short rod sent off at thousands of m/s by passes that pulled the wrong way, by
+// the rod's pass holding the velocity along the rod there instead. 111 (this build only) and 189,
+// soft bodies pinned to rigid ones, by the soft body following its joints' position passes and
+// their take-back of the angular momentum pass by pass (Simulation::substep).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
-                         ::testing::Values(2, 3, 4, 8, 17, 30, 65, 68, 86, 117, 136, 141, 142, 145, 146, 149, 153,
-                                           166, 176, 182, 183, 188, 193),
+                         ::testing::Values(2, 3, 4, 8, 17, 18, 27, 30, 49, 51, 61, 65, 66, 68, 69, 86, 87, 111,
+                                           117, 121, 136, 141, 142, 144, 145, 146, 149, 153, 166, 176, 182, 183,
+                                           188, 189, 191, 193, 195),
                          seedName);
 
 // Open (soak/known_findings.txt).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding,
                          // 104 and 140 pass in the sanitized soak build (-O1) but one or the other fails in this
                          // one (-O3): the scenes are chaotic and the two builds round differently.
-                         ::testing::Values(18, 27, 49, 51, 61, 66, 69, 87, 104, 111, 121, 131, 140, 144, 177, 189,
-                                           191, 195),
+                         ::testing::Values(92, 104, 131, 140, 177),
                          seedName);
 
 } // namespace

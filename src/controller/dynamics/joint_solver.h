@@ -2,8 +2,8 @@
 /// \file joint_solver.h
 /// Pin and rod joints as velocity constraints (sequential impulses with warm starting), with
 /// position correction by non-linear Gauss–Seidel.
-/// Each velocity constraint aims at the anchors' positions at the end of the step (SHAKE), see
-/// solveVelocities.
+/// Each velocity constraint aims at the anchors' positions at the end of the step (SHAKE), with the
+/// joint's error there what it was when its impulses begin to act; see solveVelocities.
 ///  - Pin: the two anchor points coincide, C = p_B − p_A = 0 (two equations).
 ///  - Rod: the anchors keep their distance, C = |p_B − p_A| − L = 0 (one equation, pushes or pulls).
 /// A joint to the world (bodyB absent) uses a fixed point for B.
@@ -67,11 +67,14 @@ private:
         /// impact (Simulation::finishBodyPosition); 1 for a body without impacts.
         Scalar shareA = 1;
         Scalar shareB = 1;
-        /// Where the anchors' separation at the end of the step goes apart from what the end
-        /// velocities bring: the struck bodies' motion before and during their impacts, m.
-        Vec2 shift = Vec2::Zero();
-        Vec2 offset = Vec2::Zero(); ///< p_B − p_A at the start of the step, m
+        /// p_B − p_A when the joint's velocity impulses begin to act: at the start of the step,
+        /// moved on by a struck body's motion up to its last impact, m. The end velocities move
+        /// the anchors on from there.
+        Vec2 separation = Vec2::Zero();
         Scalar length = 0; ///< rod length, m
+        /// Rod: the distance the velocity passes hold, |separation|, m. Its error against `length`
+        /// is the position passes' to remove (solveVelocities says why).
+        Scalar heldLength = 0;
         Vec2 axis = Vec2::Zero(); ///< rod: unit vector from A's anchor to B's
         Eigen::Matrix2d pinMass = Eigen::Matrix2d::Zero(); ///< pin: K⁻¹
         Scalar rodMass = 0; ///< rod: 1/K
