@@ -14,6 +14,13 @@ namespace impetus::controller {
 
 namespace {
 
+/// How many bodies down a chain of touching bodies a large world's strike shares reach
+/// (Simulation::addStrikeShares): a blow passes on through a row of touching bodies within one
+/// step, and the last of them must find the wall behind it. 8 covers a Newton's cradle of up to
+/// nine balls; one body's speed then reaches the bodies within eight links of it, about two
+/// hundred in a pile, instead of all of them.
+constexpr int kStrikeChainLinks = 8;
+
 using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start)
@@ -182,10 +189,11 @@ void Simulation::collide(const model::World& world, Scalar h)
             const model::BodyState& s = m_startStates[i];
             const BodyDerivative& d = m_startDerivatives[i];
             const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * body.geometry.boundingRadius;
-            // A fixed body moves as it was told whatever strikes it, and strikes nothing loose
-            // enough to count: its own margin covers its travel.
+            // A fixed body moves as it was told whatever strikes it (its own margin covers its
+            // travel), but a moving one strikes: the world's share counts it at its fastest
+            // point, a large world at its speed where it meets each body (addStrikeShares).
             m_strikeSpeeds[i] = body.fixed ? 0 : speed;
-            fastest = std::max(fastest, m_strikeSpeeds[i]);
+            fastest = std::max(fastest, speed);
             m_margins[i] = constants::kSpeculativeMargin;
             m_margins[i] += h * speed + h * h * (d.acceleration.norm() +
                                                  std::abs(d.angularAcceleration) * body.geometry.boundingRadius);
@@ -282,10 +290,11 @@ void Simulation::collide(const model::World& world, Scalar h)
 
 void Simulation::addStrikeShares(const model::World& world, Scalar h)
 {
-    // One proxy per dynamic body: the box around its pieces' boxes, each already enlarged by the
-    // body's own margin. Two bodies whose proxies overlap can meet within the step, so each may be
-    // struck by the other. Fixed bodies neither strike (their speed counts for nothing, as in the
-    // world's share) nor are set moving, so they are left out.
+    // One proxy per body that can strike or be struck: the box around its pieces' boxes, each
+    // already enlarged by the body's own margin. Two bodies whose proxies overlap can meet within
+    // the step. Fixed bodies at rest neither strike nor are set moving, so they are left out; a
+    // moving fixed body (the spinner's arm, a turning box's walls) strikes but is never set
+    // moving (the broad phase never pairs two fixed proxies).
     const std::vector<ColliderPiece>& pieces = m_colliders.pieces();
     const std::vector<Aabb>& boxes = m_colliders.boxes();
     m_reachProxies.clear();
@@ -296,24 +305,58 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
             box.lower = box.lower.cwiseMin(boxes[i].lower);
             box.upper = box.upper.cwiseMax(boxes[i].upper);
         }
-        if (!world.bodies[body].fixed)
-            m_reachProxies.push_back(BroadPhaseProxy{box, body, false});
+        const model::BodyState& s = m_startStates[body];
+        const bool fixed = world.bodies[body].fixed;
+        if (!fixed || !s.velocity.isZero() || s.angularVelocity != 0)
+            m_reachProxies.push_back(BroadPhaseProxy{box, body, fixed});
     }
     m_reachPhase.findPairs(m_reachProxies, m_reachPairs);
-    // A body's share: 2·h times the fastest body that can reach it. Its own speed is in its own
-    // margin already, and the struck body goes at most twice its striker's speed, so one blow
-    // passed on is covered (as the world's share covers one); the pairs are sorted, and a maximum
-    // does not depend on their order.
+
+    // Each body's reach speed: the fastest a striker that can reach it goes, counting blows
+    // passed on. A struck body leaves at most twice as fast as its striker (e ≤ 1), so its margin
+    // takes 2·h times that speed. A blow passes on down a chain of touching bodies within the
+    // step (Newton's cradle: the last ball leaves at the first one's speed), so the speeds are
+    // handed on along the pairs, kStrikeChainLinks times: a chain of that many bodies is covered
+    // as the world's share covered it, while a pile does not hand one body's speed to all of its
+    // thousands. Handed on without doubling: equal bodies pass a blow on at the striker's speed,
+    // and a blow that doubles at every link needs ever lighter bodies down the chain.
     const std::size_t n = world.bodies.size();
-    m_strikeShares.assign(n, 0);
+    m_reachSpeeds.assign(m_strikeSpeeds.begin(), m_strikeSpeeds.end());
     for (const ProxyPair& pair : m_reachPairs) {
-        const std::uint32_t a = m_reachProxies[pair.first].body;
-        const std::uint32_t b = m_reachProxies[pair.second].body;
-        m_strikeShares[a] = std::max(m_strikeShares[a], 2 * h * m_strikeSpeeds[b]);
-        m_strikeShares[b] = std::max(m_strikeShares[b], 2 * h * m_strikeSpeeds[a]);
+        // A moving fixed body strikes at its speed where it meets the other: its velocity plus
+        // its spin times the distance from its centre to the far corner of the other's box (not
+        // its whole length: the spinner's 40 m arm turns slowly near its centre).
+        const BroadPhaseProxy& first = m_reachProxies[pair.first];
+        const BroadPhaseProxy& second = m_reachProxies[pair.second];
+        if (!first.fixed && !second.fixed)
+            continue;
+        const BroadPhaseProxy& wall = first.fixed ? first : second;
+        const BroadPhaseProxy& struck = first.fixed ? second : first;
+        const model::BodyState& s = m_startStates[wall.body];
+        const Vec2 far = (struck.box.lower - s.position).cwiseAbs().cwiseMax((struck.box.upper - s.position).cwiseAbs());
+        const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * far.norm();
+        m_reachSpeeds[struck.body] = std::max(m_reachSpeeds[struck.body], speed);
     }
-    for (std::size_t i = 0; i < n; ++i)
+    // Jacobi rounds, from the last round's speeds, so that the result does not depend on the
+    // pairs' order.
+    for (int link = 0; link < kStrikeChainLinks; ++link) {
+        m_handedSpeeds = m_reachSpeeds;
+        for (const ProxyPair& pair : m_reachPairs) {
+            const BroadPhaseProxy& first = m_reachProxies[pair.first];
+            const BroadPhaseProxy& second = m_reachProxies[pair.second];
+            if (first.fixed || second.fixed)
+                continue;
+            m_handedSpeeds[second.body] = std::max(m_handedSpeeds[second.body], m_reachSpeeds[first.body]);
+            m_handedSpeeds[first.body] = std::max(m_handedSpeeds[first.body], m_reachSpeeds[second.body]);
+        }
+        m_reachSpeeds.swap(m_handedSpeeds);
+    }
+    m_strikeShares.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!world.bodies[i].fixed)
+            m_strikeShares[i] = 2 * h * m_reachSpeeds[i];
         m_margins[i] += m_strikeShares[i];
+    }
     m_colliders.enlargeBoxes(m_strikeShares);
 }
 

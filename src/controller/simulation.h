@@ -145,8 +145,10 @@ private:
     void setUpSolverBodies(const model::World& world);
     void collide(const model::World& world, Scalar h);
     /// A large world's strike shares (constants::kLocalStrikeShareMinBodies): adds to each
-    /// body's margin, and to its pieces' boxes in m_colliders (built with the bodies' own margins),
-    /// 2·h times the speed of the fastest body whose box reaches its box.
+    /// dynamic body's margin, and to its pieces' boxes in m_colliders (built with the bodies' own
+    /// margins), 2·h times the speed of the fastest striker that can reach it: a body whose box
+    /// reaches its box, a moving fixed body at its speed there, or one that reaches it down a
+    /// chain of such bodies (kStrikeChainLinks in simulation.cpp).
     void addStrikeShares(const model::World& world, Scalar h);
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
     void findPairsWithSoftBodies(const model::World& world);
@@ -195,6 +197,10 @@ private:
     /// body's fastest ellipse's.
     std::vector<Scalar> m_strikeSpeeds;
     std::vector<Scalar> m_strikeShares; ///< per body, what addStrikeShares adds to its margin, m
+    /// Per body, the fastest striker that can reach it, blows passed on included, m/s
+    std::vector<Scalar> m_reachSpeeds;
+    std::vector<Scalar> m_handedSpeeds; ///< the next round of m_reachSpeeds
+
     std::vector<BroadPhaseProxy> m_reachProxies; ///< per dynamic body, the box of its pieces
     std::vector<ProxyPair> m_reachPairs;
     BroadPhase m_reachPhase; ///< which bodies can reach which (addStrikeShares); its own cache

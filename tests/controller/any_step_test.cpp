@@ -575,7 +575,8 @@ TEST(AnyStepWork, FastBodyFarAwayAddsNoContactsToALargeField)
     for (int i = 0; i < 5; ++i) {
         quiet.step(a);
         disturbed.step(withBall);
-        // Neighbours 1 mm apart touch within their margins: about two contacts a box.
+        // Neighbours 1 mm apart, and diagonal ones 1.4 mm apart, touch within their margins:
+        // about 3.7 contacts a box.
         ASSERT_GT(quiet.profile().contacts, kSide * kSide);
         ASSERT_EQ(disturbed.profile().contacts, quiet.profile().contacts) << "step " << i;
     }
@@ -588,7 +589,8 @@ TEST(AnyStepWork, FastBodyFarAwayAddsNoContactsToALargeField)
 // struck by a heavy one at 50 m/s early in a step and leaves at nearly 100 m/s, 0.3 m in the
 // rest of the step. Its own margin (2 mm at rest) would not find the wall; the striker's share
 // does, and the ball bounces off the wall instead of passing through it. Checked at 1/60 s and
-// at 1/240 s, among 400 boxes at rest far away.
+// at 1/240 s, among 400 boxes at rest far away, so on the large world's path (the world's share
+// of a small world covers it too).
 TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
 {
     for (const Scalar h : {1.0 / 240.0, 1.0 / 60.0}) {
@@ -609,6 +611,7 @@ TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
         wall.fixed = true;
         wall.updateDerived();
         world.bodies.push_back(wall);
+        ASSERT_GE(world.bodies.size(), constants::kLocalStrikeShareMinBodies);
         const std::size_t heavy = world.bodies.size() - 3;
         const std::size_t light = world.bodies.size() - 2;
         Simulation simulation(settingsUnderTest());
@@ -623,6 +626,87 @@ TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
             }
             simulation.step(world);
         }
+    }
+}
+
+// A blow passed on down a chain, in a large world: a ball at 20 m/s strikes the first of a row
+// of six touching balls at rest (e = 1), and the last one leaves at 20 m/s towards a thin wall
+// 3 cm behind it, within the same step. The last ball is five links from the striker, so only a
+// share handed on along the row finds the wall; the world's share of a small world found it too.
+TEST(AnyStepWork, BlowPassedDownARowInALargeWorldStopsAtTheWall)
+{
+    for (const Scalar h : {1.0 / 240.0, 1.0 / 60.0}) {
+        model::World world = fieldOfBoxes(20, 20, 0.001);
+        world.settings.timeStep = h;
+        for (model::Body& box : world.bodies)
+            box.state.position += Vec2(0, 50);
+        constexpr Scalar kRadius = 0.05;
+        constexpr int kRow = 6;
+        const Scalar substep = h / solverSubsteps(h, constants::kMaxSolverStep);
+        // The striker meets the row a tenth into the (sub)step.
+        world.bodies.push_back(withMaterial(
+            makeBall("striker", 1.0, kRadius, Vec2(-2 * kRadius - 0.1 * substep * 20, 0), Vec2(20, 0)), 1.0, 0));
+        for (int k = 0; k < kRow; ++k)
+            world.bodies.push_back(withMaterial(makeBall("row", 1.0, kRadius, Vec2(2 * kRadius * k, 0)), 1.0, 0));
+        const std::size_t last = world.bodies.size() - 1;
+        const Scalar wallX = 2 * kRadius * (kRow - 1) + kRadius + 0.03;
+        model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(wallX + 0.01, 0)), 1.0, 0);
+        wall.fixed = true;
+        wall.updateDerived();
+        world.bodies.push_back(wall);
+        ASSERT_GE(world.bodies.size(), constants::kLocalStrikeShareMinBodies);
+        Simulation simulation(settingsUnderTest());
+        for (int i = 0; i < 10; ++i) {
+            simulation.step(world);
+            for (std::size_t b = 400; b < world.bodies.size() - 1; ++b) {
+                ASSERT_LT(world.bodies[b].state.position.x(), wallX - kRadius + constants::kLinearSlop)
+                    << world.bodies[b].name << " " << b << ", step " << i << " at h = " << h;
+            }
+        }
+        // The blow went down the row, off the wall and back up the row: the striker leaves at
+        // the speed it came with (all the balls are alike and e = 1).
+        EXPECT_NEAR(world.bodies[400].state.velocity.x(), -20, 1e-9) << "h = " << h;
+        EXPECT_NEAR(world.bodies[last].state.velocity.x(), 0, 1e-9) << "h = " << h;
+    }
+}
+
+// A moving fixed body strikes too: a paddle (a fixed box given 30 m/s, as the spinner's arm or a
+// turning box's wall is) meets a ball at rest 15 cm in front of a thin fixed wall a tenth into a
+// step of 1/240 s; the ball leaves at 60 m/s (22.5 cm in the rest of the step) and must meet
+// the wall, not pass it. Both shares
+// left fixed bodies out as strikers, and the ball passed through the wall; now the world's share
+// counts the paddle's speed, and a large world's its speed where it meets the ball. In a small
+// world and among 400 boxes. One step only: the paddle goes on at 30 m/s whatever it meets, and
+// in the next steps it would squeeze the ball against the wall.
+TEST(AnyStepWork, BallStruckByAMovingFixedBodyMeetsTheWall)
+{
+    for (const bool large : {false, true}) {
+        const Scalar h = 1.0 / 240.0;
+        model::World world = large ? fieldOfBoxes(20, 20, 0.001) : makeEmptyWorld(IntegratorKind::SemiImplicitEuler, h);
+        world.settings.timeStep = h;
+        for (model::Body& box : world.bodies)
+            box.state.position += Vec2(0, 50);
+        constexpr Scalar kRadius = 0.05;
+        constexpr Scalar kWallX = 1.0;
+        // 15 cm from the wall, so that the paddle (12.5 cm a step) leaves it room.
+        const Vec2 ballAt(kWallX - 0.15 - kRadius, 0);
+        model::Body paddle =
+            withMaterial(makeBox("paddle", 1.0, 0.02, 0.5, Vec2(ballAt.x() - kRadius - 0.01 - 0.1 * h * 30, 0)), 1.0, 0);
+        paddle.fixed = true;
+        paddle.state.velocity = Vec2(30, 0);
+        paddle.updateDerived();
+        world.bodies.push_back(paddle);
+        world.bodies.push_back(withMaterial(makeBall("ball", 0.1, kRadius, ballAt), 1.0, 0));
+        model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(kWallX + 0.01, 0)), 1.0, 0);
+        wall.fixed = true;
+        wall.updateDerived();
+        world.bodies.push_back(wall);
+        const std::size_t ball = world.bodies.size() - 2;
+        ASSERT_EQ(world.bodies.size() >= constants::kLocalStrikeShareMinBodies, large);
+        Simulation simulation(settingsUnderTest());
+        simulation.step(world);
+        EXPECT_LT(world.bodies[ball].state.position.x(), kWallX - kRadius + constants::kLinearSlop)
+            << (large ? "large world" : "small world");
     }
 }
 

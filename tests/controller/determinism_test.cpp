@@ -141,6 +141,22 @@ TEST(Determinism, ASplitWorldGivesTheSameBitsOnOneThreadOrTwo)
     EXPECT_EQ(twoThreads, oneThread);
 }
 
+// A large world whose bodies move fast takes its strike shares from a broad phase of its own
+// (Simulation::addStrikeShares), after the two threads have placed each half of its colliders:
+// 2000 circles falling in the (still) box, through their landing, give the same bits on one
+// thread or two.
+TEST(Determinism, LocalStrikeSharesGiveTheSameBitsOnOneThreadOrTwo)
+{
+    model::World start = model::makeRotatingBoxWithCircles(2000);
+    // Falling at 3 m/s or more, the circles' strike shares pass the constant margin.
+    for (model::Body& body : start.bodies) {
+        if (!body.fixed)
+            body.state.velocity = Vec2(0, -3);
+    }
+    ASSERT_GE(start.bodies.size(), constants::kParallelMinBodies);
+    runOnOneThreadAndTwo(start, settingsUnderTest(), 400);
+}
+
 // A split world with joints: the joints change the bodies' velocities between the contacts'
 // passes, which then start from the bodies and hand their result back every pass. Rods tie each
 // box of the pyramid's fifth row to its right-hand neighbour, a pin holds the top box to the world
