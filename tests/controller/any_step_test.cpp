@@ -562,6 +562,27 @@ model::World fieldOfBoxes(int columns, int rows, Scalar gap)
     return world;
 }
 
+/// A large world (kLocalStrikeShareMinBodies bodies or more) for the strike-share tests: 400
+/// boxes at rest 50 m above the origin, far from what the test builds there, stepped at h.
+model::World largeWorldFarAway(Scalar h)
+{
+    model::World world = fieldOfBoxes(20, 20, 0.001);
+    world.settings.timeStep = h;
+    for (model::Body& box : world.bodies)
+        box.state.position += Vec2(0, 50);
+    return world;
+}
+
+/// A thin fixed wall, 2 cm thick and 2 m high, whose face towards −x stands at x = face (e = 1,
+/// no friction).
+model::Body thinWallAt(Scalar face)
+{
+    model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(face + 0.01, 0)), 1.0, 0);
+    wall.fixed = true;
+    wall.updateDerived();
+    return wall;
+}
+
 TEST(AnyStepWork, FastBodyFarAwayAddsNoContactsToALargeField)
 {
     constexpr int kSide = 20;
@@ -594,10 +615,7 @@ TEST(AnyStepWork, FastBodyFarAwayAddsNoContactsToALargeField)
 TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
 {
     for (const Scalar h : {1.0 / 240.0, 1.0 / 60.0}) {
-        model::World world = fieldOfBoxes(20, 20, 0.001);
-        world.settings.timeStep = h;
-        for (model::Body& box : world.bodies)
-            box.state.position += Vec2(0, 50);
+        model::World world = largeWorldFarAway(h);
         constexpr Scalar kRadius = 0.05;
         constexpr Scalar kWallX = 1.0; // the wall's face towards the balls
         // The light ball's surface 5 cm from the wall; the heavy one 0.1·h·50 m/s from the light
@@ -607,10 +625,7 @@ TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
         const Vec2 heavyAt = lightAt - Vec2(2 * kRadius + 0.1 * substep * 50, 0);
         world.bodies.push_back(withMaterial(makeBall("heavy", 100.0, kRadius, heavyAt, Vec2(50, 0)), 1.0, 0));
         world.bodies.push_back(withMaterial(makeBall("light", 0.1, kRadius, lightAt), 1.0, 0));
-        model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(kWallX + 0.01, 0)), 1.0, 0);
-        wall.fixed = true;
-        wall.updateDerived();
-        world.bodies.push_back(wall);
+        world.bodies.push_back(thinWallAt(kWallX));
         ASSERT_GE(world.bodies.size(), constants::kLocalStrikeShareMinBodies);
         const std::size_t heavy = world.bodies.size() - 3;
         const std::size_t light = world.bodies.size() - 2;
@@ -636,10 +651,7 @@ TEST(AnyStepWork, BallStruckNearAWallInALargeWorldBouncesOffIt)
 TEST(AnyStepWork, BlowPassedDownARowInALargeWorldStopsAtTheWall)
 {
     for (const Scalar h : {1.0 / 240.0, 1.0 / 60.0}) {
-        model::World world = fieldOfBoxes(20, 20, 0.001);
-        world.settings.timeStep = h;
-        for (model::Body& box : world.bodies)
-            box.state.position += Vec2(0, 50);
+        model::World world = largeWorldFarAway(h);
         constexpr Scalar kRadius = 0.05;
         constexpr int kRow = 6;
         const Scalar substep = h / solverSubsteps(h, constants::kMaxSolverStep);
@@ -650,10 +662,7 @@ TEST(AnyStepWork, BlowPassedDownARowInALargeWorldStopsAtTheWall)
             world.bodies.push_back(withMaterial(makeBall("row", 1.0, kRadius, Vec2(2 * kRadius * k, 0)), 1.0, 0));
         const std::size_t last = world.bodies.size() - 1;
         const Scalar wallX = 2 * kRadius * (kRow - 1) + kRadius + 0.03;
-        model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(wallX + 0.01, 0)), 1.0, 0);
-        wall.fixed = true;
-        wall.updateDerived();
-        world.bodies.push_back(wall);
+        world.bodies.push_back(thinWallAt(wallX));
         ASSERT_GE(world.bodies.size(), constants::kLocalStrikeShareMinBodies);
         Simulation simulation(settingsUnderTest());
         for (int i = 0; i < 10; ++i) {
@@ -682,10 +691,7 @@ TEST(AnyStepWork, BallStruckByAMovingFixedBodyMeetsTheWall)
 {
     for (const bool large : {false, true}) {
         const Scalar h = 1.0 / 240.0;
-        model::World world = large ? fieldOfBoxes(20, 20, 0.001) : makeEmptyWorld(IntegratorKind::SemiImplicitEuler, h);
-        world.settings.timeStep = h;
-        for (model::Body& box : world.bodies)
-            box.state.position += Vec2(0, 50);
+        model::World world = large ? largeWorldFarAway(h) : makeEmptyWorld(IntegratorKind::SemiImplicitEuler, h);
         constexpr Scalar kRadius = 0.05;
         constexpr Scalar kWallX = 1.0;
         // 15 cm from the wall, so that the paddle (12.5 cm a step) leaves it room.
@@ -697,10 +703,7 @@ TEST(AnyStepWork, BallStruckByAMovingFixedBodyMeetsTheWall)
         paddle.updateDerived();
         world.bodies.push_back(paddle);
         world.bodies.push_back(withMaterial(makeBall("ball", 0.1, kRadius, ballAt), 1.0, 0));
-        model::Body wall = withMaterial(makeBox("wall", 1.0, 0.02, 2.0, Vec2(kWallX + 0.01, 0)), 1.0, 0);
-        wall.fixed = true;
-        wall.updateDerived();
-        world.bodies.push_back(wall);
+        world.bodies.push_back(thinWallAt(kWallX));
         const std::size_t ball = world.bodies.size() - 2;
         ASSERT_EQ(world.bodies.size() >= constants::kLocalStrikeShareMinBodies, large);
         Simulation simulation(settingsUnderTest());
