@@ -70,23 +70,23 @@ inline constexpr Scalar kMaxSolverStep = 1.0 / 240.0;
 
 /// A split step of a rigid world finds its contacts once for all its substeps when no body can
 /// move farther than this over the whole step (speed plus spin at its bounding radius, times the
-/// step), m. Found once, the contacts need margins for the whole step, and every body's margin
-/// also covers twice the fastest body's travel (a body at rest may be struck and set moving): in a
+/// step), m. Found once, the contacts need margins for the whole step, and every dynamic body's
+/// margin also covers twice a striker's travel (a body at rest may be struck and set moving): in a
 /// pile at rest that adds nothing, but among bodies moving at metres per second (rain, a tumbling
 /// box of circles at 1/60 s) it made three times as many speculative contacts as margins for one
 /// substep, and the step cost 2.5 times as much. The constant speculative margin: a step whose
 /// fastest body moves less than it keeps margins within twice a substep's.
 inline constexpr Scalar kReuseContactsMaxTravel = kSpeculativeMargin;
 
-/// A world with at least this many bodies gives each body the share of a strike (2·h times the
-/// striker's speed, so that a body set moving within the step finds what lies behind it) only from
-/// the bodies that can reach it this step, found by a broad phase over the bodies' own margins;
-/// a smaller world gives every body twice the fastest body's travel, which costs nothing there.
-/// In a large heap the world's share made every body's margin as wide as the fastest body's (one
-/// body flung at 100 m/s by Box2D v3's spinner gave each of its 6,076 bodies a margin of 0.83 m at
-/// 1/240 s): about 60 speculative contacts a body and steps of seconds. Below 256 bodies even
-/// every pair of bodies is few enough pairs, and small scenes (the tests' and the soak's) keep the
-/// simpler rule.
+/// A world with at least this many bodies, some of which move more than 1 mm a step, gives each
+/// dynamic body the share of a strike (2·h times the striker's speed, so that a body set moving
+/// within the step finds what lies behind it) only from the strikers that can reach it this step,
+/// found by a broad phase over the bodies' own margins (Simulation::addStrikeShares); a smaller
+/// world gives every dynamic body twice the fastest body's travel. In a large heap that world's
+/// share made every body's margin as wide as the fastest body's (one body flung at 100 m/s by Box2D
+/// v3's spinner gave each of its 6,076 bodies a margin of 0.83 m at 1/240 s): about 60 speculative
+/// contacts a body and steps of seconds. Below 256 bodies, even all n² pairs of bodies are few
+/// (under 33,000), and small scenes (the tests' and the soak's) keep the simpler rule.
 inline constexpr std::size_t kLocalStrikeShareMinBodies = 256;
 
 /// At most this many solver substeps per step: a step of up to 1 s is split into substeps of at
