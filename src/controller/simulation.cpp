@@ -21,6 +21,9 @@ namespace {
 /// hundred in a pile, instead of all of them.
 constexpr int kStrikeChainLinks = 8;
 
+/// The box around both boxes.
+Aabb merged(const Aabb& a, const Aabb& b) { return Aabb{a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)}; }
+
 using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start)
@@ -301,10 +304,8 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
     for (std::size_t i = 0; i < pieces.size();) {
         const std::uint32_t body = pieces[i].body;
         Aabb box = boxes[i];
-        for (++i; i < pieces.size() && pieces[i].body == body; ++i) {
-            box.lower = box.lower.cwiseMin(boxes[i].lower);
-            box.upper = box.upper.cwiseMax(boxes[i].upper);
-        }
+        for (++i; i < pieces.size() && pieces[i].body == body; ++i)
+            box = merged(box, boxes[i]);
         const model::BodyState& s = m_startStates[body];
         const bool fixed = world.bodies[body].fixed;
         if (!fixed || !s.velocity.isZero() || s.angularVelocity != 0)
@@ -375,11 +376,8 @@ void Simulation::findPairsWithSoftBodies(const model::World& world)
         std::uint32_t end = i + 1;
         Aabb box = boxes[i];
         if (world.softGrid(model::BodyId{body})) {
-            while (end < pieces.size() && pieces[end].body == body) {
-                box.lower = box.lower.cwiseMin(boxes[end].lower);
-                box.upper = box.upper.cwiseMax(boxes[end].upper);
-                ++end;
-            }
+            for (; end < pieces.size() && pieces[end].body == body; ++end)
+                box = merged(box, boxes[end]);
         }
         m_proxies.push_back(BroadPhaseProxy{box, body, world.bodies[body].fixed});
         m_proxyPieces.push_back({i, end});
