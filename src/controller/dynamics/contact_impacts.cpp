@@ -17,6 +17,7 @@ namespace impetus::controller {
 
 using detail::fastestApproach;
 using detail::kMaxBlockConditionNumber;
+using detail::kMaxFixedImpactsPerContact;
 using detail::kMaxImpactVisitsPerContact;
 using detail::kMinImpactVisits;
 using detail::tangentOf;
@@ -26,6 +27,9 @@ namespace {
 /// The least fraction of a step a struck body's speculative contacts count as left after its last
 /// impact: an impact at the very end of the step leaves its gap to the next step.
 constexpr Scalar kShortestRemainder = 1e-9;
+
+/// A fixed body that moves (an arm, a turning wall): it can close on a body without giving way.
+bool moving(const SolverBody& body) { return body.velocity != Vec2::Zero() || body.angularVelocity != 0; }
 
 /// Time t in (0, h] at which a gap s closes under relative normal velocity vn and acceleration a:
 /// the smallest root of s + vn·t + ½a·t² = 0. Negative when the gap does not close within h.
@@ -150,8 +154,10 @@ PointAt pointAt(const ContactConstraint& c, const ContactConstraintPoint& p, std
     const Vec2 centreA = impacts.positionAt(c.bodyA, a, tau, h);
     const Vec2 centreB = impacts.positionAt(c.bodyB, b, tau, h);
     PointAt at;
-    at.surfaceA = centreA + rotate(Vec2(p.rA - 0.5 * p.separation * c.normal), surfaceTurnAt(c.bodyA, a, tau, h, impacts));
-    at.surfaceB = centreB + rotate(Vec2(p.rB + 0.5 * p.separation * c.normal), surfaceTurnAt(c.bodyB, b, tau, h, impacts));
+    at.surfaceA = centreA + impacts.turnedWith(c.bodyA, Vec2(p.rA - 0.5 * p.separation * c.normal),
+                                               surfaceTurnAt(c.bodyA, a, tau, h, impacts));
+    at.surfaceB = centreB + impacts.turnedWith(c.bodyB, Vec2(p.rB + 0.5 * p.separation * c.normal),
+                                               surfaceTurnAt(c.bodyB, b, tau, h, impacts));
     const Vec2 common = impactPointOf(c, bodies, at.surfaceA, at.surfaceB);
     at.armA = common - centreA;
     at.armB = common - centreB;
@@ -270,7 +276,15 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     std::vector<Candidate>& heap = m_candidates;
     heap.clear();
     m_versions.assign(m_constraints.size(), 0);
+    const auto pinchedOut = [&](std::uint32_t ci) {
+        if (m_fixedImpacts[ci] < kMaxFixedImpactsPerContact)
+            return false;
+        const auto& [bodyA, bodyB] = m_constraintBodies[ci];
+        return m_pinched[movable(bodies[bodyA]) ? bodyA : bodyB] != 0;
+    };
     const auto consider = [&](std::uint32_t ci) {
+        if (pinchedOut(ci))
+            return;
         if (const std::optional<Scalar> fastest = fastestApproach(m_constraints[ci], bodies, h, this)) {
             heap.push_back({*fastest, ci, m_versions[ci]});
             std::push_heap(heap.begin(), heap.end(), later);
@@ -284,6 +298,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     // Which constraints each body takes part in, to find those an impact affects. Built only
     // when some contact approaches: a resting scene, the common case, never needs it.
     if (!heap.empty()) {
+        m_fixedImpacts.assign(m_constraints.size(), 0);
+        m_turnCache.assign(bodies.size(), TurnCache{});
+        m_fixedStriker.assign(bodies.size(), kNoStriker);
+        m_pinched.assign(bodies.size(), 0);
         m_bodyConstraintStart.assign(bodies.size() + 1, 0);
         for (const auto& [bodyA, bodyB] : m_constraintBodies) {
             ++m_bodyConstraintStart[bodyA + 1];
@@ -391,6 +409,17 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         if (!(x(0) > 0) && (count < 2 || !(x(1) > 0)))
             continue;
         ++resolved;
+        if (!movable(a) || !movable(b)) {
+            if (m_fixedImpacts[best] < UINT8_MAX)
+                ++m_fixedImpacts[best];
+            const std::uint32_t fixedBody = movable(a) ? c.bodyB : c.bodyA;
+            const std::uint32_t struck = movable(a) ? c.bodyA : c.bodyB;
+            std::uint32_t& first = m_fixedStriker[struck];
+            if (first == kNoStriker)
+                first = fixedBody;
+            else if (first != fixedBody && (moving(bodies[first]) || moving(bodies[fixedBody])))
+                m_pinched[struck] = 1;
+        }
 
         const Vec2 t = tangentOf(c.normal);
         // The collision inspector's record (none in a normal step): the state before the impulses.
@@ -557,6 +586,16 @@ Scalar ContactSolver::turnAt(std::uint32_t index, const SolverBody& body, Scalar
     for (std::uint32_t k = m_lastTimedImpulse[index]; k != kNoImpulse; k = m_impulseTimeline[k].previous)
         turn -= (h * std::min(tau, m_impulseTimeline[k].tau)) * m_impulseTimeline[k].angularVelocityChange;
     return turn;
+}
+
+Vec2 ContactSolver::turnedWith(std::uint32_t index, const Vec2& r, Scalar turn) const
+{
+    if (turn == 0)
+        return r; // cos 0 = 1 and sin 0 = 0 exactly: rotate() would give r
+    TurnCache& cache = m_turnCache[index];
+    if (turn != cache.turn)
+        cache = {turn, std::cos(turn), std::sin(turn)};
+    return Vec2(cache.cosine * r.x() - cache.sine * r.y(), cache.sine * r.x() + cache.cosine * r.y());
 }
 
 Vec2 ContactSolver::positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const

@@ -223,7 +223,10 @@ public:
     Vec2 positionAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
     /// How far body `index` has turned by τ·h, with its angular velocity and the impacts so far, rad.
     Scalar turnAt(std::uint32_t index, const SolverBody& body, Scalar tau, Scalar h) const;
-
+    /// `r` turned by `turn` (turnAt) for body `index`, as rotate() gives it: the impact pass turns
+    /// every contact of a struck body by its one turn at the impact's time, so the body's last
+    /// sine and cosine are kept, and a turn of zero (a body that does not spin) costs none.
+    Vec2 turnedWith(std::uint32_t index, const Vec2& r, Scalar turn) const;
 
 private:
     static constexpr std::uint32_t kNoImpulse = UINT32_MAX;
@@ -356,6 +359,20 @@ private:
     std::vector<std::uint32_t> m_previousOf; ///< per constraint: the last step's record, or kNoRecord
     std::vector<std::uint32_t> m_laneOf; ///< per constraint of a batched step: its lane
     std::vector<std::uint32_t> m_versions; ///< per constraint: bumped when it is looked at again
+    /// Per constraint with a fixed body: the impacts it took this step (kMaxFixedImpactsPerContact).
+    std::vector<std::uint8_t> m_fixedImpacts;
+    /// Per body: the first fixed body that struck it this step (kNoStriker: none), and whether a
+    /// second one did, with one of the two moving: the body is pinched between them.
+    std::vector<std::uint32_t> m_fixedStriker;
+    std::vector<std::uint8_t> m_pinched;
+    static constexpr std::uint32_t kNoStriker = UINT32_MAX;
+    /// Per body, during solveImpacts: its last turn and that turn's cosine and sine (turnedWith).
+    struct TurnCache {
+        Scalar turn = 0;
+        Scalar cosine = 1;
+        Scalar sine = 0;
+    };
+    mutable std::vector<TurnCache> m_turnCache;
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
     std::vector<std::uint32_t> m_bodyConstraintFill;
