@@ -313,29 +313,57 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
     }
     m_reachPhase.findPairs(m_reachProxies, m_reachPairs);
 
-    // Each body's reach speed: the fastest a striker that can reach it goes, counting blows
-    // passed on. A struck body leaves at most twice as fast as its striker (e ≤ 1), so its margin
-    // takes 2·h times that speed. A blow passes on down a chain of touching bodies within the
-    // step (Newton's cradle: the last ball leaves at the first one's speed), so the speeds are
-    // handed on along the pairs, kStrikeChainLinks times: a chain of that many bodies is covered
-    // as the world's share covered it, while a pile does not hand one body's speed to all of its
-    // thousands. Handed on without doubling: equal bodies pass a blow on at the striker's speed,
-    // and a blow that doubles at every link needs ever lighter bodies down the chain.
+    // Each body's reach speed: the fastest a striker that can reach it approaches it, counting
+    // blows passed on. An impact changes a body's velocity by at most twice the speed at which
+    // its striker approaches (e ≤ 1), so its margin takes 2·h times that speed on top of its own
+    // travel. The speed is the striker's relative to the body, not its speed in the world's
+    // frame: bodies flying together at 100 m/s (the spinner's heap thrown by its arm) strike each
+    // other no harder than at rest, and taking their speeds in the world's frame gave each of
+    // them a margin of 2·h·100 m/s, 40 contacts a body. A blow passes on down a chain of touching
+    // bodies within the step (Newton's cradle: the last ball leaves at the first one's speed), so
+    // the speeds are handed on along the pairs, kStrikeChainLinks times: a chain of that many
+    // bodies is covered as the world's share covered it, while a pile does not hand one body's
+    // speed to all of its thousands. Handed on without doubling: equal bodies pass a blow on at
+    // the striker's speed, and a blow that doubles at every link needs ever lighter bodies down
+    // the chain.
     const std::size_t n = world.bodies.size();
-    m_reachSpeeds.assign(m_strikeSpeeds.begin(), m_strikeSpeeds.end());
+    // A bound on how fast a point of `first` approaches a point of `second`: the difference of
+    // their velocities plus each one's spin at its bounding radius. A soft body's ellipses move
+    // each their own way, so a pair with one counts both bodies' fastest speeds in full.
+    const auto approachBound = [&](std::uint32_t first, std::uint32_t second) {
+        if (world.softGrid(model::BodyId{first}) || world.softGrid(model::BodyId{second}))
+            return m_strikeSpeeds[first] + m_strikeSpeeds[second];
+        const model::BodyState& a = m_startStates[first];
+        const model::BodyState& b = m_startStates[second];
+        return (a.velocity - b.velocity).norm() +
+               std::abs(a.angularVelocity) * world.bodies[first].geometry.boundingRadius +
+               std::abs(b.angularVelocity) * world.bodies[second].geometry.boundingRadius;
+    };
+    m_reachSpeeds.assign(n, 0);
     for (const ProxyPair& pair : m_reachPairs) {
-        // A moving fixed body strikes at its speed where it meets the other: its velocity plus
-        // its spin times the distance from its centre to the far corner of the other's box (not
-        // its whole length: the spinner's 40 m arm turns slowly near its centre).
         const BroadPhaseProxy& first = m_reachProxies[pair.first];
         const BroadPhaseProxy& second = m_reachProxies[pair.second];
-        if (!first.fixed && !second.fixed)
+        if (!first.fixed && !second.fixed) {
+            const Scalar speed = approachBound(first.body, second.body);
+            m_reachSpeeds[first.body] = std::max(m_reachSpeeds[first.body], speed);
+            m_reachSpeeds[second.body] = std::max(m_reachSpeeds[second.body], speed);
             continue;
+        }
+        // A moving fixed body strikes at its velocity where it meets the other: taken at the
+        // centre of the other's box, plus its spin times the half-diagonal of that box for the
+        // box's other points (not its whole length: the spinner's 40 m arm turns slowly near its
+        // centre), relative to the other body.
         const BroadPhaseProxy& wall = first.fixed ? first : second;
         const BroadPhaseProxy& struck = first.fixed ? second : first;
-        const model::BodyState& s = m_startStates[wall.body];
-        const Vec2 far = (struck.box.lower - s.position).cwiseAbs().cwiseMax((struck.box.upper - s.position).cwiseAbs());
-        const Scalar speed = s.velocity.norm() + std::abs(s.angularVelocity) * far.norm();
+        const model::BodyState& w = m_startStates[wall.body];
+        const model::BodyState& b = m_startStates[struck.body];
+        const Vec2 centre = 0.5 * (struck.box.lower + struck.box.upper);
+        const Scalar halfDiagonal = 0.5 * (struck.box.upper - struck.box.lower).norm();
+        const Vec2 wallVelocity = w.velocity + cross(w.angularVelocity, Vec2(centre - w.position));
+        const Scalar own = world.softGrid(model::BodyId{struck.body})
+                               ? m_strikeSpeeds[struck.body] + b.velocity.norm()
+                               : std::abs(b.angularVelocity) * world.bodies[struck.body].geometry.boundingRadius;
+        const Scalar speed = (wallVelocity - b.velocity).norm() + std::abs(w.angularVelocity) * halfDiagonal + own;
         m_reachSpeeds[struck.body] = std::max(m_reachSpeeds[struck.body], speed);
     }
     // Jacobi rounds, from the last round's speeds, so that the result does not depend on the

@@ -146,9 +146,10 @@ private:
     void collide(const model::World& world, Scalar h);
     /// A large world's strike shares (constants::kLocalStrikeShareMinBodies): adds to each
     /// dynamic body's margin, and to its pieces' boxes in m_colliders (built with the bodies' own
-    /// margins), 2·h times the speed of the fastest striker that can reach it: a body whose box
-    /// reaches its box, a moving fixed body at its speed there, or one that reaches it down a
-    /// chain of such bodies (kStrikeChainLinks in simulation.cpp).
+    /// margins), 2·h times the speed at which the fastest striker that can reach it approaches
+    /// it: a body whose box reaches its box (at the difference of their velocities and their
+    /// spins), a moving fixed body at its velocity there, or one that reaches it down a chain of
+    /// such bodies (kStrikeChainLinks in simulation.cpp).
     void addStrikeShares(const model::World& world, Scalar h);
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
     void findPairsWithSoftBodies(const model::World& world);
