@@ -364,7 +364,15 @@ World makeRandomScene(std::uint64_t seed, const RandomSceneOptions& options)
         soft.soft = model::SoftSettings{};
         soft.soft->ellipsesPerSquareMeter = random.uniform(kMinSoftDensity, kMaxSoftDensity);
         soft.soft->stiffness = random.uniform(kMinSoftStiffness, kMaxSoftStiffness);
-        soft.soft->damping = random.uniform(0, kMaxSoftDamping);
+        // Either way of giving the grid's damping (SoftSettings::dampingMode): a damping ratio,
+        // the default, or a coefficient in N·s/m. Setting only the coefficient, as the generator
+        // did before the ratio came, left it unused: every soft body had the default ratio.
+        if (random.chance(0.5)) {
+            soft.soft->dampingMode = model::SoftDampingMode::Coefficient;
+            soft.soft->damping = random.uniform(0, kMaxSoftDamping);
+        } else {
+            soft.soft->dampingRatio = random.uniform(kMinSoftDampingRatio, kMaxSoftDampingRatio);
+        }
     }
     if (random.chance(kObstacleShare)) {
         Body obstacle = randomBody(random, count, cells[static_cast<std::size_t>(count)]);

@@ -43,6 +43,10 @@ inline constexpr Scalar kMaxSoftDensity = 64; ///< see kMinSoftDensity
 inline constexpr Scalar kMinSoftStiffness = 200; ///< see kMinSoftDensity
 inline constexpr Scalar kMaxSoftStiffness = 5000; ///< see kMinSoftDensity
 inline constexpr Scalar kMaxSoftDamping = 2; ///< see kMinSoftDensity
+/// Damping ratios ζ of the grid springs drawn when the damping is given as a ratio (half the soft
+/// bodies): from lightly damped to twice critical, the default (constants::kDefaultSoftDampingRatio).
+inline constexpr Scalar kMinSoftDampingRatio = 0.1;
+inline constexpr Scalar kMaxSoftDampingRatio = 2.0; ///< see kMinSoftDampingRatio
 /// Strongest random gravity drawn, m/s² (two g), besides the standard one and zero.
 inline constexpr Scalar kMaxGravity = 20.0;
 /// Largest Stokes drag drawn, N·s/m.

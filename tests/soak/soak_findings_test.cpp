@@ -1,6 +1,7 @@
 // The random-scene soak's findings (soak/known_findings.txt, issue 16), one scene file each in
-// data/: bodies leaving the closed box, and energy growing past the bound of docs/physics.md,
-// "Energy in a closed box". The fixed ones run as regression tests (each failed before its fix);
+// data/ (soak-seed-N.json; soak-seed-N-g2.json for a scene of the generator since it draws both
+// ways of giving a soft body's damping): bodies leaving the closed box, and energy growing past
+// the bound of docs/physics.md, "Energy in a closed box". The fixed ones run as regression tests (each failed before its fix);
 // the open ones, in the contact and joint solver, are disabled. When a seed is fixed, take it off
 // known_findings.txt and out of the disabled list here, into the enabled one. Run them all with
 //   soak_tests --gtest_also_run_disabled_tests --gtest_filter='*SoakFindings*'
@@ -11,17 +12,17 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdint>
+#include <algorithm>
 #include <string>
 
 namespace impetus::soak {
 namespace {
 
-class SoakFinding : public ::testing::TestWithParam<std::uint64_t> {};
+class SoakFinding : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SoakFinding, RunsTenSecondsInTheBoxWithinTheEnergyBound)
 {
-    const std::string path = std::string(IMPETUS_SOAK_DATA_DIR) + "/soak-seed-" + std::to_string(GetParam()) + ".json";
+    const std::string path = std::string(IMPETUS_SOAK_DATA_DIR) + "/soak-seed-" + GetParam() + ".json";
     const model::SceneLoadResult loaded = model::loadSceneFile(path);
     ASSERT_TRUE(loaded.ok()) << path;
     const SoakResult result = runSoakScene(*loaded.world, kSoakTime);
@@ -29,9 +30,11 @@ TEST_P(SoakFinding, RunsTenSecondsInTheBoxWithinTheEnergyBound)
                                  << result.finding->time << " s: " << result.finding->detail;
 }
 
-std::string seedName(const ::testing::TestParamInfo<std::uint64_t>& seed)
+std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 {
-    return "seed" + std::to_string(seed.param);
+    std::string name = "seed" + seed.param;
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
 }
 
 // Fixed: 30, 65, 141, 145 and 166 by main's impact and angular-momentum work (merged at
@@ -50,16 +53,22 @@ std::string seedName(const ::testing::TestParamInfo<std::uint64_t>& seed)
 // soft bodies pinned to rigid ones, by the soft body following its joints' position passes and
 // their take-back of the angular momentum pass by pass (Simulation::substep).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
-                         ::testing::Values(2, 3, 4, 8, 17, 18, 27, 30, 49, 51, 61, 65, 66, 68, 69, 86, 87, 111,
-                                           117, 121, 136, 141, 142, 144, 145, 146, 149, 153, 166, 176, 182, 183,
-                                           188, 189, 191, 193, 195),
+                         ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "49", "51", "61", "65",
+                                           "66", "68", "69", "86", "87", "111", "117", "121", "136", "141", "142",
+                                           "144", "145", "146", "149", "153", "166", "176", "182", "183", "188",
+                                           "189", "191", "193", "195"),
                          seedName);
 
-// Open (soak/known_findings.txt).
+// Open. 104-g2, 111-g2 and 131-g2 are the findings of the soak as it runs now
+// (soak/known_findings.txt): the generator draws a soft body's damping as a ratio or as a
+// coefficient since 2026-11-27 (before, the coefficient it drew was left unused and every soft body
+// had the default ratio), which changed every scene with a soft body. 92, 104, 131, 140 and 177
+// are the earlier generators' scenes, still open in this build: 104 and 140 pass in the sanitized
+// soak build (-O1) but one or the other fails in this one (-O3), as the scenes are chaotic and the
+// two builds round differently. 177's scene was stored again on 2026-11-27 as the generator then
+// made it (its soft body with the default damping ratio; the file had the unused coefficient).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding,
-                         // 104 and 140 pass in the sanitized soak build (-O1) but one or the other fails in this
-                         // one (-O3): the scenes are chaotic and the two builds round differently.
-                         ::testing::Values(92, 104, 131, 140, 177),
+                         ::testing::Values("92", "104", "131", "140", "177", "104-g2", "111-g2", "131-g2"),
                          seedName);
 
 } // namespace
