@@ -19,6 +19,7 @@ namespace {
 
 using model::IntegratorKind;
 using testing::makeEmptyWorld;
+using testing::pinAt;
 
 constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
 
@@ -84,14 +85,8 @@ model::World makePile(IntegratorKind integrator, Scalar h, PileKind kind)
     if (kind.joints) {
         for (const auto& [row, column] : {std::pair{0, 0}, std::pair{1, 2}, std::pair{3, 4}}) {
             const auto [a, b] = neighbours(row, column);
-            model::Joint pin;
-            pin.type = model::JointType::Pin;
-            pin.bodyA = model::BodyId{a};
-            pin.bodyB = model::BodyId{b};
-            pin.worldAnchor = 0.5 * (world.bodies[a].state.position + world.bodies[b].state.position);
-            pin.anchorA = rotate(Vec2(pin.worldAnchor - world.bodies[a].state.position), -world.bodies[a].state.angle);
-            pin.anchorB = rotate(Vec2(pin.worldAnchor - world.bodies[b].state.position), -world.bodies[b].state.angle);
-            world.joints.push_back(pin);
+            const Vec2 anchor = 0.5 * (world.bodies[a].state.position + world.bodies[b].state.position);
+            world.joints.push_back(pinAt(world, model::BodyId{a}, model::BodyId{b}, anchor));
         }
         for (const auto& [row, column] : {std::pair{2, 0}, std::pair{0, 3}}) {
             const auto [a, b] = neighbours(row, column);

@@ -21,6 +21,7 @@ using model::IntegratorKind;
 using testing::makeBall;
 using testing::makeBox;
 using testing::makeEmptyWorld;
+using testing::pinAt;
 
 constexpr Scalar kPi = std::numbers::pi_v<Scalar>;
 constexpr Scalar kG = 9.81;
@@ -159,14 +160,7 @@ TEST(PinJoint, HoldsTwoBodiesTogether)
     world.bodies.push_back(makeBox("b", 2.0, 1.0, 0.2, Vec2(0.5, 0), 0.0));
     world.bodies[0].state.velocity = Vec2(0, 1);
     world.bodies[1].state.velocity = Vec2(0, -0.5);
-    model::Joint pin;
-    pin.type = model::JointType::Pin;
-    pin.bodyA = model::BodyId{0};
-    pin.bodyB = model::BodyId{1};
-    pin.worldAnchor = Vec2::Zero();
-    pin.anchorA = Vec2(0.5, 0);
-    pin.anchorB = Vec2(-0.5, 0);
-    world.joints.push_back(pin);
+    world.joints.push_back(pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2::Zero()));
     const Vec2 p0 = world.bodies[0].state.velocity * 1.0 + world.bodies[1].state.velocity * 2.0;
     Simulation simulation(settingsUnderTest());
     for (int i = 0; i < 480; ++i) {

@@ -24,6 +24,7 @@ using testing::makeBall;
 using testing::makeBox;
 using testing::makeEmptyWorld;
 using testing::makeGround;
+using testing::pinAt;
 using testing::withMaterial;
 
 constexpr Scalar kH = 1.0 / 240.0;
@@ -736,14 +737,7 @@ TEST(SoftBody, PinnedToATurningRigidBoxKeepsMomentumAndGainsNoEnergy)
     world.bodies.push_back(makeBox("box", 1, 0.5, 0.5, Vec2(0.5, 0)));
     world.bodies[0].state.velocity = Vec2(0, 2);
     world.bodies[1].state.velocity = Vec2(0, -2);
-    model::Joint pin;
-    pin.type = model::JointType::Pin;
-    pin.bodyA = model::BodyId{0};
-    pin.bodyB = model::BodyId{1};
-    pin.worldAnchor = Vec2::Zero();
-    pin.anchorA = Vec2(0.5, 0);
-    pin.anchorB = Vec2(-0.5, 0);
-    world.joints.push_back(pin);
+    world.joints.push_back(pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2::Zero()));
     controller::prepareSoftBodies(world);
     const Vec2 momentum = controller::linearMomentum(world);
     const Scalar energy = controller::computeEnergy(world).total();

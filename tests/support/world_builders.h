@@ -4,6 +4,7 @@
 
 #include "model/world.h"
 
+#include <optional>
 #include <string>
 
 namespace impetus::testing {
@@ -56,6 +57,24 @@ inline model::Body withMaterial(model::Body body, Scalar restitution, Scalar fri
     body.material.restitution = restitution;
     body.material.friction = friction;
     return body;
+}
+
+/// A pin joint of body a to body b (to the world when b is nullopt) at the world point `anchor`,
+/// its anchors in the bodies' frames derived as the scene loader derives them.
+inline model::Joint pinAt(const model::World& world, model::BodyId a, std::optional<model::BodyId> b, Vec2 anchor)
+{
+    const auto local = [&](model::BodyId id) {
+        const model::BodyState& state = world.body(id).state;
+        return rotate(Vec2(anchor - state.position), -state.angle);
+    };
+    model::Joint pin;
+    pin.type = model::JointType::Pin;
+    pin.bodyA = a;
+    pin.bodyB = b;
+    pin.worldAnchor = anchor;
+    pin.anchorA = local(a);
+    pin.anchorB = b ? local(*b) : anchor;
+    return pin;
 }
 
 /// A world with no gravity and the given integrator and step.
