@@ -79,9 +79,10 @@ inline constexpr Scalar kMaxSolverStep = 1.0 / 240.0;
 inline constexpr Scalar kReuseContactsMaxTravel = kSpeculativeMargin;
 
 /// A world with at least this many bodies, some of which move more than 1 mm a step, gives each
-/// dynamic body the share of a strike (2·h times the striker's speed, so that a body set moving
-/// within the step finds what lies behind it) only from the strikers that can reach it this step,
-/// found by a broad phase over the bodies' own margins (Simulation::addStrikeShares); a smaller
+/// dynamic body the share of a strike (2·h times the speed at which a striker approaches it, so
+/// that a body set moving within the step finds what lies behind it) only from the strikers that
+/// can reach it this step, found by a broad phase over the bodies' own margins
+/// (Simulation::addStrikeShares); a smaller
 /// world gives every dynamic body twice the fastest body's travel. In a large heap that world's
 /// share made every body's margin as wide as the fastest body's (one body flung at 100 m/s by Box2D
 /// v3's spinner gave each of its 6,076 bodies a margin of 0.83 m at 1/240 s): about 60 speculative
