@@ -1,5 +1,7 @@
 #include "model/example_scenes.h"
 
+#include "model/pin_anchors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -220,10 +222,7 @@ Joint pinJoint(const World& world, std::uint32_t a, std::uint32_t b, const Vec2&
     joint.bodyA = BodyId{a};
     joint.bodyB = BodyId{b};
     joint.worldAnchor = anchor;
-    const BodyState& stateA = world.bodies[a].state;
-    const BodyState& stateB = world.bodies[b].state;
-    joint.anchorA = rotate(Vec2(anchor - stateA.position), -stateA.angle);
-    joint.anchorB = rotate(Vec2(anchor - stateB.position), -stateB.angle);
+    derivePinAnchors(world, joint);
     return joint;
 }
 

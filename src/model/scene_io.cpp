@@ -1,6 +1,7 @@
 #include "model/scene_io.h"
 
 #include "model/lesson_io.h"
+#include "model/pin_anchors.h"
 #include "model/polygon.h"
 
 #include <nlohmann/json.hpp>
@@ -1149,18 +1150,8 @@ private:
             return;
         joint.bodyA = *a.id;
         joint.bodyB = b.id;
-        if (posesKnown(a, b)) {
-            // The hinge is given once, in the world; each body keeps it in its own frame so that
-            // the solver can follow it as the body turns: local = R(−θ)·(world − x).
-            const Body& bodyA = world.body(joint.bodyA);
-            joint.anchorA = rotate(Vec2(joint.worldAnchor - bodyA.state.position), -bodyA.state.angle);
-            if (joint.bodyB) {
-                const Body& bodyB = world.body(*joint.bodyB);
-                joint.anchorB = rotate(Vec2(joint.worldAnchor - bodyB.state.position), -bodyB.state.angle);
-            } else {
-                joint.anchorB = joint.worldAnchor;
-            }
-        }
+        if (posesKnown(a, b))
+            derivePinAnchors(world, joint); // the hinge is given once, in the world
         world.joints.push_back(joint);
     }
 

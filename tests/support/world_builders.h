@@ -2,6 +2,7 @@
 /// \file world_builders.h
 /// Small worlds built in code for the engine tests: each sets up one textbook situation.
 
+#include "model/pin_anchors.h"
 #include "model/world.h"
 
 #include <optional>
@@ -63,17 +64,12 @@ inline model::Body withMaterial(model::Body body, Scalar restitution, Scalar fri
 /// its anchors in the bodies' frames derived as the scene loader derives them.
 inline model::Joint pinAt(const model::World& world, model::BodyId a, std::optional<model::BodyId> b, Vec2 anchor)
 {
-    const auto local = [&](model::BodyId id) {
-        const model::BodyState& state = world.body(id).state;
-        return rotate(Vec2(anchor - state.position), -state.angle);
-    };
     model::Joint pin;
     pin.type = model::JointType::Pin;
     pin.bodyA = a;
     pin.bodyB = b;
     pin.worldAnchor = anchor;
-    pin.anchorA = local(a);
-    pin.anchorB = b ? local(*b) : anchor;
+    model::derivePinAnchors(world, pin);
     return pin;
 }
 
