@@ -69,6 +69,11 @@ int solverSubsteps(Scalar h, Scalar maxSubstep);
 /// 1 without drag, at most constants::kMaxSolverSubsteps.
 int dragSubsteps(const model::World& world, Scalar h);
 
+/// The equal substeps a step of h seconds needs so that no body other than a circle or a soft
+/// body turns by more than an eighth of a turn within one: ⌈|ω|·h / (π/4)⌉ for the fastest
+/// spinning one, fixed bodies included; 1 for slower spins, at most constants::kMaxSolverSubsteps.
+int spinSubsteps(const model::World& world, Scalar h);
+
 /// How far the fastest movable body of `world` travels in h seconds at its present speed, m: its
 /// speed plus its spin times its bounding radius, times h.
 Scalar fastestTravel(const model::World& world, Scalar h);

@@ -85,6 +85,33 @@ TEST(SolverSubsteps, SplitsLongStepsIntoSubstepsOfAtMostTheSolverStep)
     EXPECT_EQ(solverSubsteps(std::nan(""), s), 1);
 }
 
+// A step is split until no body but a circle turns by more than an eighth of a turn in a substep;
+// a world in free flight is not split, however fast its bodies spin.
+TEST(SolverSubsteps, FastSpinsSplitStepsWithContactsToAnEighthOfATurn)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2::Zero());
+    world.bodies.push_back(makeBox("box", 1.0, 0.5, 0.1, Vec2(0, 5)));
+    world.bodies.push_back(makeBall("ball", 1.0, 0.1, Vec2(50, 5)));
+    world.bodies[1].state.angularVelocity = 5000; // a circle: its outline does not change
+    const Scalar eighth = std::numbers::pi / 4;
+    world.bodies[0].state.angularVelocity = 0.99 * eighth * 240; // just under an eighth a step
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
+    world.bodies[0].state.angularVelocity = -2.5 * eighth * 240; // either way round
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 3);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 10);
+    world.bodies[0].state.angularVelocity = 1e9;
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), constants::kMaxSolverSubsteps);
+
+    // In free flight the box keeps the user's step; beside a floor it is split.
+    world.bodies[0].state.angularVelocity = 2.5 * eighth * 240;
+    Simulation simulation(settingsUnderTest());
+    simulation.step(world);
+    EXPECT_EQ(simulation.profile().substeps, 1);
+    world.bodies.push_back(makeGround("floor", 10, 1, Vec2(0, 4.7)));
+    simulation.step(world);
+    EXPECT_EQ(simulation.profile().substeps, 3);
+}
+
 // A world in free flight integrates over the step the user chose (an integrator lesson sees its
 // error at that step); the same world with a contact to solve is split.
 TEST(SolverSubsteps, OnlyStepsWithContactsOrJointsAreSplit)
