@@ -51,28 +51,32 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // light body on a short rod sent off at thousands of m/s by passes that pulled the wrong way, by
 // the rod's pass holding the velocity along the rod there instead. 111 (this build only) and 189,
 // soft bodies pinned to rigid ones, by the soft body following its joints' position passes and
-// their take-back of the angular momentum pass by pass (Simulation::substep).
+// their take-back of the angular momentum pass by pass (Simulation::substep). 104-g2 and 111-g2,
+// light bodies pressed into the floor by a heavy soft body or a heap above them, and the earlier
+// generator's 92, by passes that take the contacts with fixed bodies last (ContactSolver::partition).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "49", "51", "61", "65",
-                                           "66", "68", "69", "86", "87", "111", "117", "121", "136", "141", "142",
-                                           "144", "145", "146", "149", "153", "166", "176", "182", "183", "188",
-                                           "189", "191", "193", "195"),
+                                           "66", "68", "69", "86", "87", "92", "111", "117", "121", "136", "141",
+                                           "142", "144", "145", "146", "149", "153", "166", "176", "182", "183",
+                                           "188", "189", "191", "193", "195", "104-g2", "111-g2"),
                          seedName);
 
-// Open. 104-g2, 111-g2 and 131-g2 are the findings of the soak as it runs now
-// (soak/known_findings.txt): the generator draws a soft body's damping as a ratio or as a
-// coefficient since 2026-11-27 (before, the coefficient it drew was left unused and every soft body
-// had the default ratio), which changed every scene with a soft body. 92, 104, 131, 140 and 177
-// are the earlier generators' scenes, still open in this build: 104 and 140 pass in the sanitized
-// soak build (-O1) but one or the other fails in this one (-O3), as the scenes are chaotic and the
-// two builds round differently. 177's scene was stored again on 2026-11-27 as the generator then
-// made it (its soft body with the default damping ratio; the file had the unused coefficient).
-// 131-g2's first finding, an ellipse struck to 2,233 rad/s that passed through the wall at 0.25 s,
-// was fixed by splitting fast-spinning steps (controller::spinSubsteps; its own test is
-// Tunnelling.FastSpinningEllipseBouncesOffAWall); the scene now fails at 0.44 s on a soft body
-// driven to 300-430 m/s under explicit Euler, pressed into the floor.
+// Open. 31 and 131-g2 are the findings of the soak as it runs now (soak/known_findings.txt);
+// 104-g2 and 111-g2 were too until the contacts with fixed bodies went last, which brought 31 (a
+// 3.2 g body pressed into the ceiling by a 797 kg one: the same kind as 104 and 111). The generator draws a soft
+// body's damping as a ratio or as a coefficient since 2026-11-27 (before, the coefficient it drew
+// was left unused and every soft body had the default ratio), which changed every scene with a
+// soft body. 104, 131, 140 and 177 are the earlier generators' scenes, still open in this build:
+// 104 and 140 pass in the sanitized soak build (-O1) but one or the other fails in this one (-O3),
+// as the scenes are chaotic and the two builds round differently (140 passes in both now). 177's
+// scene was stored again on 2026-11-27 as the generator then made it (its soft body with the
+// default damping ratio; the file had the unused coefficient). 131-g2's first finding, an ellipse
+// struck to 2,233 rad/s that passed through the wall at 0.25 s, was fixed by splitting
+// fast-spinning steps (controller::spinSubsteps; its own test is
+// Tunnelling.FastSpinningEllipseBouncesOffAWall); the scene now fails at 1.04 s on a soft body
+// driven to hundreds of m/s under explicit Euler, which leaves by the ceiling's corner.
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding,
-                         ::testing::Values("92", "104", "131", "140", "177", "104-g2", "111-g2", "131-g2"),
+                         ::testing::Values("31", "104", "131", "140", "177", "131-g2"),
                          seedName);
 
 } // namespace

@@ -29,10 +29,28 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
         group.clear();
     m_split = m_constraints.size() >= constants::kParallelMinConstraints;
     m_batched = m_constraints.size() >= m_batchMinConstraints && !m_constraints.empty();
+    // Passes that go one contact at a time take a group's contacts with a fixed body (the floor,
+    // a wall) after those between two movable bodies, each in the broad phase's order. The last
+    // word in a pass is then the fixed body's: a light body pressed into the floor by a heavy one
+    // ends each pass moving no further into the floor, and the heavy one is slowed by what the
+    // floor gives back through it, pass by pass. In the broad phase's order the floor (the first
+    // body of a scene, as a rule) came first, and the heavy body's contact after it pushed the
+    // light one on into the floor every pass: a 0.3 kg ellipse under a 4.5 t soft body was 0.13 m
+    // inside the floor in five steps (soak seed 111; 104 alike). The batches of a large world go
+    // by colours instead, and keep their order.
+    // Called before the constraints are built: the bodies are in m_constraintBodies.
+    const auto fixedLast = [&](std::vector<std::uint32_t>& group) {
+        if (m_batched)
+            return;
+        std::stable_partition(group.begin(), group.end(), [&](std::uint32_t ci) {
+            return movable(bodies[m_constraintBodies[ci][0]]) && movable(bodies[m_constraintBodies[ci][1]]);
+        });
+    };
     if (!m_split) {
         m_groups[0].resize(m_constraints.size());
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci)
             m_groups[0][ci] = ci;
+        fixedLast(m_groups[0]);
         if (m_batched) {
             assignSlots(bodies);
             colour(bodies);
@@ -68,6 +86,8 @@ void ContactSolver::partition(std::span<const SolverBody> bodies)
         const std::uint8_t half = ha == kFixedHalf ? hb : (hb == kFixedHalf || hb == ha ? ha : 2);
         m_groups[half == kFixedHalf ? 0 : half].push_back(ci);
     }
+    for (std::vector<std::uint32_t>& group : m_groups)
+        fixedLast(group);
     if (m_batched) {
         assignSlots(bodies);
         colour(bodies);
