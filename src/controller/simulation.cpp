@@ -92,7 +92,7 @@ int spinSubsteps(const model::World& world, Scalar h)
     // say (an ellipse at 2,233 rad/s turned half a turn a substep and passed through a wall, soak
     // seed 131). Such a world is split until no body turns farther than that in a substep, as
     // far as kMaxSolverSubsteps allow. Box2D caps the spin itself at that turn instead; here the
-    // body keeps its spin, and the lesson its energy.
+    // body keeps its spin and its kinetic energy.
     Scalar fastest = 0;
     for (const model::Body& body : world.bodies) {
         if (!body.soft && !std::holds_alternative<model::Circle>(body.shape))
