@@ -356,8 +356,9 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
     // A bound on how fast a point of `first` approaches a point of `second`: the difference of
     // their velocities plus each one's spin at its bounding radius. A soft body's ellipses move
     // each their own way, so a pair with one counts both bodies' fastest speeds in full.
+    const auto soft = [&](std::uint32_t body) { return m_entries[body] == Entry::SoftOwner; };
     const auto approachBound = [&](std::uint32_t first, std::uint32_t second) {
-        if (world.softGrid(model::BodyId{first}) || world.softGrid(model::BodyId{second}))
+        if (soft(first) || soft(second))
             return m_strikeSpeeds[first] + m_strikeSpeeds[second];
         const model::BodyState& a = m_startStates[first];
         const model::BodyState& b = m_startStates[second];
@@ -386,7 +387,7 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
         const Vec2 centre = 0.5 * (struck.box.lower + struck.box.upper);
         const Scalar halfDiagonal = 0.5 * (struck.box.upper - struck.box.lower).norm();
         const Vec2 wallVelocity = w.velocity + cross(w.angularVelocity, Vec2(centre - w.position));
-        const Scalar own = world.softGrid(model::BodyId{struck.body})
+        const Scalar own = soft(struck.body)
                                ? m_strikeSpeeds[struck.body] + b.velocity.norm()
                                : std::abs(b.angularVelocity) * world.bodies[struck.body].geometry.boundingRadius;
         const Scalar speed = (wallVelocity - b.velocity).norm() + std::abs(w.angularVelocity) * halfDiagonal + own;
