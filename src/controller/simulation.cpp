@@ -758,6 +758,10 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     m_contactSolver.finishVelocities(m_bodies);
     if (guardEnergy)
         holdContactEnergy(kineticBefore, h);
+    // A light body held by a fixed one against a far heavier one props it up (a pebble under a
+    // tonne): the passes cannot stop the heavy body through it, this does.
+    m_contactSolver.findProps(m_bodies);
+    m_contactSolver.solvePropVelocities(m_bodies, h);
     if (m_ledger)
         m_ledger->afterVelocities(m_bodies, m_contactSolver.constraints(), m_contactSolver.records());
     m_profile.velocityMs += millisecondsSince(velocityStart);
@@ -784,6 +788,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         if (jointsOk && contactsOk)
             break;
     }
+    m_contactSolver.solvePropPositions(m_bodies);
     // Moving bodies while their velocities stay changes the angular momentum; each pushed pair
     // takes it back by turning its relative velocity (docs/physics.md, "Conservation"). Only
     // without gravity, whose torque changes the angular momentum about any fixed point anyway:

@@ -54,16 +54,18 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // their take-back of the angular momentum pass by pass (Simulation::substep). 104-g2 and 111-g2,
 // light bodies pressed into the floor by a heavy soft body or a heap above them, and the earlier
 // generator's 92, by passes that take the contacts with fixed bodies last (ContactSolver::partition).
+// 31, a 3.2 g body wedged into the ceiling's corner by a 797 kg box sliding along the ceiling, by
+// props (ContactSolver::findProps): the box now rests on the light body as on the wall behind it.
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
-                         ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "49", "51", "61", "65",
-                                           "66", "68", "69", "86", "87", "92", "111", "117", "121", "136", "141",
-                                           "142", "144", "145", "146", "149", "153", "166", "176", "182", "183",
-                                           "188", "189", "191", "193", "195", "104-g2", "111-g2"),
+                         ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "31", "49", "51", "61",
+                                           "65", "66", "68", "69", "86", "87", "92", "111", "117", "121", "136",
+                                           "141", "142", "144", "145", "146", "149", "153", "166", "176", "182",
+                                           "183", "188", "189", "191", "193", "195", "104-g2", "111-g2"),
                          seedName);
 
-// Open. 31 and 131-g2 are the findings of the soak as it runs now (soak/known_findings.txt);
+// Open. 131-g2 is the finding of the soak as it runs now (soak/known_findings.txt);
 // 104-g2 and 111-g2 were too until the contacts with fixed bodies went last, which brought 31 (a
-// 3.2 g body pressed into the ceiling by a 797 kg one: the same kind as 104 and 111). The generator draws a soft
+// 3.2 g body pressed into the ceiling by a 797 kg one: the same kind as 104 and 111), fixed by props. The generator draws a soft
 // body's damping as a ratio or as a coefficient since 2026-11-27 (before, the coefficient it drew
 // was left unused and every soft body had the default ratio), which changed every scene with a
 // soft body. 104, 131, 140 and 177 are the earlier generators' scenes, still open in this build:
@@ -76,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
 // Tunnelling.FastSpinningEllipseBouncesOffAWall); the scene now fails at 1.04 s on a soft body
 // driven to hundreds of m/s under explicit Euler, which leaves by the ceiling's corner.
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding,
-                         ::testing::Values("31", "104", "131", "140", "177", "131-g2"),
+                         ::testing::Values("104", "131", "140", "177", "131-g2"),
                          seedName);
 
 } // namespace

@@ -25,29 +25,13 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
     SolverBody& b = bodies[c.bodyB];
     for (int i = 0; i < c.pointCount; ++i) {
         const ContactConstraintPoint& p = c.points[static_cast<std::size_t>(i)];
-        // Current separation of the two surface points along the normal, which turns with A.
-        const Vec2& rotationA = rotations[c.bodyA];
-        const Vec2& rotationB = rotations[c.bodyB];
-        const Transform frameA{a.position, rotationA.x(), rotationA.y()};
-        const Transform frameB{b.position, rotationB.x(), rotationB.y()};
-        const Vec2 n = frameA.rotate(c.localNormalA);
-        const Vec2 pointA = frameA.apply(p.localAnchorA);
-        const Vec2 pointB = frameB.apply(p.localAnchorB);
-        const Scalar separation = (pointB - pointA).dot(n);
-        deepest = std::min(deepest, separation);
-
-        const Scalar correction =
-            std::clamp(constants::kPositionCorrectionFactor * (separation + constants::kLinearSlop),
-                       -constants::kMaxPositionCorrection, 0.0);
-        if (correction == 0)
+        const detail::PositionCorrection look =
+            detail::positionCorrection(c, p, a, b, rotations[c.bodyA], rotations[c.bodyB]);
+        deepest = std::min(deepest, look.separation);
+        if (look.impulse.isZero())
             continue;
-        const Vec2 mid = 0.5 * (pointA + pointB);
-        const Vec2 rA = mid - a.position;
-        const Vec2 rB = mid - b.position;
-        const Scalar mass = effectiveMass(a, b, rA, rB, n);
-        const Vec2 impulse = (-correction * mass) * n;
-        applyPositionImpulse(a, b, rA, rB, impulse);
-        push += impulse;
+        applyPositionImpulse(a, b, look.rA, look.rB, look.impulse);
+        push += look.impulse;
         // A resting point within the slop moves nothing: the sine and cosine are computed again
         // only for a body that turned, not at every look.
         if (movable(a))

@@ -200,6 +200,23 @@ public:
     /// (restoreAngularMomentum; docs/physics.md, "Conservation").
     void takeBackPushes(std::span<SolverBody> bodies) const;
 
+    /// Props (contact_props.cpp). A light body that a fixed body holds against one at least
+    /// kPropMassRatio times as heavy (a pebble under a tonne, a chip wedged in a corner by a
+    /// sliding crate) is a prop: the velocity passes, which hand each contact's impulse to both
+    /// of its bodies, slow the heavy body by about 1/ratio of its approach a pass and so let it
+    /// crush the prop through the fixed body. findProps() finds them, after finishVelocities();
+    /// it needs the records' touching. A prop holds only where the heavy body pushes it against
+    /// the fixed bodies that touch it: within 45° of one's push, or into a corner of two.
+    void findProps(std::span<const SolverBody> bodies);
+    /// Then stops the heavy body's approach at each prop as if the prop were fixed; the prop's
+    /// own velocity is left as the passes made it. Applied after the passes and not kept for the
+    /// warm start.
+    void solvePropVelocities(std::span<SolverBody> bodies, Scalar h);
+    /// After the position passes: moves the heavy body, alone, out of each prop.
+    void solvePropPositions(std::span<SolverBody> bodies);
+    /// The contacts findProps() found: between a prop and a heavy body.
+    std::size_t propCount() const { return m_props.size(); }
+
     /// The constraints of this step, with their impact impulses. Their normal and tangent impulses
     /// are the warm start's: the passes' final ones are in the records (swapRecords).
     const std::vector<ContactConstraint>& constraints() const { return m_constraints; }
@@ -338,6 +355,27 @@ private:
 
     std::vector<std::uint32_t> m_struckBodies; ///< the bodies this step's impacts struck, once each
     std::vector<ContactConstraint> m_constraints;
+    /// See findProps.
+    struct Prop {
+        std::uint32_t constraint = 0;
+        bool propIsA = false; ///< the prop is the constraint's body A (else B)
+    };
+    struct PropCandidate {
+        std::uint32_t constraint = 0;
+        std::uint32_t prop = 0; ///< the light body
+    };
+    struct PropSupport {
+        std::uint32_t body = 0;
+        Vec2 direction = Vec2::Zero(); ///< the way a touching fixed body pushes it
+        std::uint32_t constraint = 0; ///< the contact with that fixed body
+    };
+    static constexpr int kPropPasses = 4;
+    std::vector<Prop> m_props;
+    std::vector<std::uint32_t> m_propFixedContacts; ///< the props' contacts with fixed bodies
+    std::vector<PropCandidate> m_propCandidates;
+    std::vector<PropSupport> m_propSupports;
+    std::vector<std::uint32_t> m_propLight;
+    std::vector<Vec2> m_propScratch;
     bool m_measureImpactWork = false; ///< see measureImpactWork
     Scalar m_impactNormalWork = 0; ///< see impactNormalWork, J
     Scalar m_impactFrictionWork = 0; ///< see impactFrictionWork, J
