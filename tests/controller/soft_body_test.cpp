@@ -336,6 +336,34 @@ TEST(SoftBody, CrushedUnderAHeavyBoxItRecoversItsShape)
     EXPECT_GT(smallest, 0.5);
 }
 
+TEST(SoftBody, UnderAHundredTonnesItsEllipsesHoldTheWeightOffTheFloor)
+{
+    // The 1 kg soft box under 100 t: each of its ellipses is rigid, so it is crushed down to its
+    // ellipses and no further. Its bottom ellipses are props (ContactSolver::findProps): before
+    // them, the passes let the weight push them into the floor and came down to it itself.
+    model::World world = worldWithGround();
+    world.bodies.push_back(withMaterial(soft(makeBox("jelly", 1, 1, 1, Vec2(0, 0.5)), 64), 0, 0.5));
+    world.bodies.push_back(withMaterial(makeBox("weight", 1e5, 1, 1, Vec2(0, 1.52)), 0, 0.5));
+    controller::prepareSoftBodies(world);
+    const Scalar height = 2 * world.softBodies[0].semiAxes().y(); // one ellipse's
+    controller::Simulation simulation(controller::settingsUnderTest());
+    Scalar lowestWeight = INFINITY;
+    Scalar lowestEllipse = INFINITY;
+    for (int i = 0; i < static_cast<int>(std::lround(3.0 / kH)); ++i) {
+        simulation.step(world);
+        lowestWeight = std::min(lowestWeight, world.bodies[2].state.position.y() - 0.5);
+        for (const Vec2& p : world.softBodies[0].positions)
+            lowestEllipse = std::min(lowestEllipse, p.y());
+    }
+    // No ellipse sinks into the floor deeper than the position passes call solved (three times
+    // the slop; before, the bottom row sank 5.5 cm), and at least a row of them stays between the
+    // floor and the weight's underside. The weight rests (it still sways sideways on the squashed
+    // grid's springs, at centimetres a second and dying away).
+    EXPECT_GT(lowestEllipse, 0.5 * height - 3 * constants::kLinearSlop);
+    EXPECT_GT(lowestWeight, height - 2 * constants::kLinearSlop);
+    EXPECT_LT(std::abs(world.bodies[2].state.velocity.y()), 1e-6);
+}
+
 TEST(SoftBody, EnergyFallsUnderDamping)
 {
     // No gravity, no contact: a soft body stretched to 1.2 times its size, released at rest. Its

@@ -64,14 +64,15 @@ void ContactSolver::findProps(std::span<const SolverBody> bodies)
         const SolverBody& b = bodies[m_constraintBodies[ci][1]];
         if (!movable(a) || !movable(b) || !m_records[ci].touching)
             continue;
-        // A soft body's ellipses are left to its springs: a soft body under a heavy one is meant
-        // to give, and its ellipses are neither props nor what rests on one.
+        // A soft body's ellipse may be a prop (each is rigid: a soft body crushed under a tonne
+        // down to its ellipses holds there), but is never the heavy body that rests on one: its
+        // springs hand its load on to the rest of its grid, which the prop would not see (with
+        // them as heavy bodies too, soak seed 92's soft body was pushed out by the ceiling).
         const ContactConstraint& c = m_constraints[ci];
-        if (c.ownerA != c.bodyA || c.ownerB != c.bodyB)
-            continue;
-        if (a.invMass >= kPropMassRatio * b.invMass && a.invMass > 0)
+        const bool softA = c.ownerA != c.bodyA, softB = c.ownerB != c.bodyB;
+        if (a.invMass >= kPropMassRatio * b.invMass && a.invMass > 0 && !softB)
             m_propCandidates.push_back({ci, m_constraintBodies[ci][0]});
-        else if (b.invMass >= kPropMassRatio * a.invMass && b.invMass > 0)
+        else if (b.invMass >= kPropMassRatio * a.invMass && b.invMass > 0 && !softA)
             m_propCandidates.push_back({ci, m_constraintBodies[ci][1]});
     }
     if (m_propCandidates.empty())
