@@ -62,17 +62,21 @@ void ContactSolver::findProps(std::span<const SolverBody> bodies)
     for (std::uint32_t ci = 0; ci < m_constraintBodies.size(); ++ci) {
         const SolverBody& a = bodies[m_constraintBodies[ci][0]];
         const SolverBody& b = bodies[m_constraintBodies[ci][1]];
-        if (!movable(a) || !movable(b) || !m_records[ci].touching)
+        // The masses first, which the bodies' first cache line holds: the record and the
+        // constraint are fetched only for the rare pair that passes (a pile of equal boxes has
+        // none, and fetching them cost the base-100 pyramid 3 % of its step).
+        const bool aLight = a.invMass > 0 && a.invMass >= kPropMassRatio * b.invMass;
+        const bool bLight = b.invMass > 0 && b.invMass >= kPropMassRatio * a.invMass;
+        if ((!aLight && !bLight) || !movable(a) || !movable(b) || !m_records[ci].touching)
             continue;
         // A soft body's ellipse may be a prop (each is rigid: a soft body crushed under a tonne
         // down to its ellipses holds there), but is never the heavy body that rests on one: its
         // springs hand its load on to the rest of its grid, which the prop would not see (with
         // them as heavy bodies too, soak seed 92's soft body was pushed out by the ceiling).
         const ContactConstraint& c = m_constraints[ci];
-        const bool softA = c.ownerA != c.bodyA, softB = c.ownerB != c.bodyB;
-        if (a.invMass >= kPropMassRatio * b.invMass && a.invMass > 0 && !softB)
+        if (aLight && c.ownerB == c.bodyB)
             m_propCandidates.push_back({ci, m_constraintBodies[ci][0]});
-        else if (b.invMass >= kPropMassRatio * a.invMass && b.invMass > 0 && !softA)
+        else if (bLight && c.ownerA == c.bodyA)
             m_propCandidates.push_back({ci, m_constraintBodies[ci][1]});
     }
     if (m_propCandidates.empty())
