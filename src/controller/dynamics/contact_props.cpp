@@ -145,7 +145,7 @@ void stopApproach(const ContactConstraint& c, SolverBody& a, SolverBody& b, Scal
     }
 }
 
-/// Moves c's bodies apart as a position pass would (solvePositions), m.
+/// Moves c's bodies apart as a position pass would (solvePositions).
 void separate(const ContactConstraint& c, SolverBody& a, SolverBody& b)
 {
     for (int i = 0; i < c.pointCount; ++i) {

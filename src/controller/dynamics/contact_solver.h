@@ -214,8 +214,6 @@ public:
     void solvePropVelocities(std::span<SolverBody> bodies, Scalar h);
     /// After the position passes: moves the heavy body, alone, out of each prop.
     void solvePropPositions(std::span<SolverBody> bodies);
-    /// The contacts findProps() found: between a prop and a heavy body.
-    std::size_t propCount() const { return m_props.size(); }
 
     /// The constraints of this step, with their impact impulses. Their normal and tangent impulses
     /// are the warm start's: the passes' final ones are in the records (swapRecords).

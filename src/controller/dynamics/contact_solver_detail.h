@@ -11,7 +11,6 @@
 #include <Eigen/Core>
 
 #include <algorithm>
-
 #include <optional>
 #include <span>
 
