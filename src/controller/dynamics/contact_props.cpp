@@ -4,8 +4,6 @@
 #include "controller/dynamics/contact_solver.h"
 #include "controller/dynamics/contact_solver_detail.h"
 
-#include "model/constants.h"
-
 #include <algorithm>
 #include <cmath>
 
