@@ -1,8 +1,9 @@
 #include "controller/integration/integrator.h"
+#include "controller/soft/soft_spin.h"
 
 namespace impetus::controller {
 
-void ExplicitEulerIntegrator::step(const model::World&, std::span<const model::BodyState> start,
+void ExplicitEulerIntegrator::step(const model::World& world, std::span<const model::BodyState> start,
                                     std::span<const BodyDerivative> startDerivative, Scalar h,
                                     std::vector<model::BodyState>& end)
 {
@@ -16,6 +17,11 @@ void ExplicitEulerIntegrator::step(const model::World&, std::span<const model::B
         state.angle += h * d.angularVelocity;
         state.velocity += h * d.acceleration;
         state.angularVelocity += h * d.angularAcceleration;
+    }
+    if (!world.softBodies.empty()) {
+        m_gridTorques.assign(world.softBodies.size(), 0);
+        addGridTorques(world, start, startDerivative, 1, m_gridTorques);
+        keepGridAngularMomentum(world, start, end, h, m_gridTorques);
     }
 }
 

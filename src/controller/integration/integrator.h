@@ -41,13 +41,17 @@ private:
 };
 
 /// Explicit (forward) Euler: x ← x + h·v, v ← v + h·a(x, v), both from the old state. First order;
-/// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step.
+/// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step. A soft grid then
+/// gets the angular momentum that the torque from outside at the start of the step gives it
+/// (soft_spin.h): explicit Euler alone would spin it up by itself.
 class ExplicitEulerIntegrator final : public Integrator {
 public:
     void step(const model::World& world, std::span<const model::BodyState> start,
               std::span<const BodyDerivative> startDerivative, Scalar h, std::vector<model::BodyState>& end) override;
     model::IntegratorKind kind() const override { return model::IntegratorKind::Euler; }
 
+private:
+    std::vector<Scalar> m_gridTorques;
 };
 
 /// Semi-implicit (symplectic) Euler: v ← v + h·a(x, v), then x ← x + h·v with the new velocity.
@@ -62,7 +66,9 @@ public:
 
 /// Classical fourth-order Runge–Kutta: four derivative evaluations k₁…k₄ at t, t+h/2, t+h/2 and
 /// t+h, combined as y ← y + h/6·(k₁ + 2k₂ + 2k₃ + k₄). Fourth order: halving h divides the error
-/// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile).
+/// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile). A
+/// soft grid then gets the angular momentum that the torque from outside, weighted over the four
+/// stages as the method weights their accelerations, gives it (soft_spin.h).
 class Rk4Integrator final : public Integrator {
 public:
     void step(const model::World& world, std::span<const model::BodyState> start,
@@ -73,6 +79,7 @@ private:
     std::vector<model::BodyState> m_stage;
     std::vector<BodyDerivative> m_k2, m_k3, m_k4;
     ForceScratch m_scratch;
+    std::vector<Scalar> m_gridTorques;
 };
 
 /// A new integrator of the given kind.

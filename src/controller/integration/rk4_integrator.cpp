@@ -1,4 +1,5 @@
 #include "controller/integration/integrator.h"
+#include "controller/soft/soft_spin.h"
 
 namespace impetus::controller {
 
@@ -23,13 +24,25 @@ void Rk4Integrator::step(const model::World& world, std::span<const model::BodyS
                          std::span<const BodyDerivative> k1s, Scalar h, std::vector<model::BodyState>& end)
 {
     // The four stages of the classical method, each over the whole world so that coupled bodies
-    // see each other's intermediate states.
+    // see each other's intermediate states. A soft grid's torque from outside is summed over
+    // them with the method's weights.
+    const bool soft = !world.softBodies.empty();
+    if (soft) {
+        m_gridTorques.assign(world.softBodies.size(), 0);
+        addGridTorques(world, start, k1s, 1.0 / 6, m_gridTorques);
+    }
     advance(start, k1s, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k2, m_scratch);
+    if (soft)
+        addGridTorques(world, m_stage, m_k2, 2.0 / 6, m_gridTorques);
     advance(start, m_k2, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k3, m_scratch);
+    if (soft)
+        addGridTorques(world, m_stage, m_k3, 2.0 / 6, m_gridTorques);
     advance(start, m_k3, h, m_stage);
     computeDerivatives(world, m_stage, m_k4, m_scratch);
+    if (soft)
+        addGridTorques(world, m_stage, m_k4, 1.0 / 6, m_gridTorques);
 
     const Scalar w = h / 6;
     end.resize(start.size());
@@ -48,6 +61,8 @@ void Rk4Integrator::step(const model::World& world, std::span<const model::BodyS
         state.angularVelocity = s0.angularVelocity + w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
                                                       2 * k3.angularAcceleration + k4.angularAcceleration);
     }
+    if (soft)
+        keepGridAngularMomentum(world, start, end, h, m_gridTorques);
 }
 
 } // namespace impetus::controller
