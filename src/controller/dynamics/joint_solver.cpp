@@ -68,6 +68,71 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
     return det != 0 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
 }
 
+/// The most pins solved together as one block (JointSolver::PinBlock): a matrix of 2n × 2n. A
+/// larger group (a chain of many links, a mesh of pins) goes one pin at a time.
+constexpr std::size_t kMaxBlockPins = 8;
+
+/// What an impulse P at lever arm s does to the velocity of the body's point at lever arm r:
+/// Δ(v + ω × r) = (1/m)·P + (1/I)·(s × P)·perp(r), as a matrix.
+Eigen::Matrix2d pointResponse(const SolverBody& body, const Vec2& r, const Vec2& s)
+{
+    const Vec2 perpR(-r.y(), r.x());
+    const Vec2 perpS(-s.y(), s.x());
+    return body.invMass * Eigen::Matrix2d::Identity() + body.invInertia * perpR * perpS.transpose();
+}
+
+/// Root of x's set in a union–find forest, halving the path on the way.
+std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+/// One pin of a block as the block's matrix sees it: its bodies (kWorld for the world), the
+/// lever arms its impulses act at, and how much of each body's velocity moves it.
+struct PinArms {
+    std::uint32_t bodyA;
+    std::uint32_t bodyB;
+    Vec2 rA;
+    Vec2 rB;
+    Scalar shareA = 1;
+    Scalar shareB = 1;
+};
+
+/// The matrix of a block of pins: block (k, l) is what pin l's impulse (+P on its B, −P on its A)
+/// does to pin k's relative anchor motion, share_B·(v_B + ω_B × r_B) − share_A·(v_A + ω_A × r_A),
+/// summed over the moving bodies the two pins share. Symmetric, as each body has one share.
+Eigen::MatrixXd pinBlockMatrix(std::span<const SolverBody> bodies, std::span<const PinArms> pins, std::uint32_t world)
+{
+    const auto n = static_cast<Eigen::Index>(pins.size());
+    Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    const auto moves = [&](std::uint32_t index) {
+        return index != world && (bodies[index].invMass > 0 || bodies[index].invInertia > 0);
+    };
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const PinArms& pk = pins[static_cast<std::size_t>(k)];
+        for (Eigen::Index l = 0; l < n; ++l) {
+            const PinArms& pl = pins[static_cast<std::size_t>(l)];
+            Eigen::Matrix2d block = Eigen::Matrix2d::Zero();
+            const auto add = [&](std::uint32_t bodyK, const Vec2& rK, Scalar signK, Scalar shareK) {
+                if (!moves(bodyK))
+                    return;
+                if (bodyK == pl.bodyA)
+                    block -= (signK * shareK) * pointResponse(bodies[bodyK], rK, pl.rA);
+                if (bodyK == pl.bodyB)
+                    block += (signK * shareK) * pointResponse(bodies[bodyK], rK, pl.rB);
+            };
+            add(pk.bodyA, pk.rA, -1, pk.shareA);
+            add(pk.bodyB, pk.rB, 1, pk.shareB);
+            matrix.block<2, 2>(2 * k, 2 * l) = block;
+        }
+    }
+    return matrix;
+}
+
 /// A joint's impulse: it holds both bodies, which therefore finish the step as constrained ones.
 void applyJointImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& impulse)
 {
@@ -134,6 +199,63 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         }
         m_joints.push_back(c);
     }
+    buildBlocks(bodies);
+}
+
+void JointSolver::buildBlocks(std::span<const SolverBody> bodies)
+{
+    m_blocks.clear();
+    std::size_t pins = 0;
+    for (const Constraint& c : m_joints)
+        pins += c.type == model::JointType::Pin ? 1 : 0;
+    if (pins < 2)
+        return;
+    // The pins' moving bodies, joined into sets by the pins: the world and fixed bodies join
+    // nothing, as they do not move whatever the impulses.
+    const auto moves = [&](std::uint32_t index) {
+        return index != kWorld && (bodies[index].invMass > 0 || bodies[index].invInertia > 0);
+    };
+    std::vector<std::uint32_t> parent(bodies.size());
+    for (std::uint32_t i = 0; i < parent.size(); ++i)
+        parent[i] = i;
+    for (const Constraint& c : m_joints) {
+        if (c.type == model::JointType::Pin && moves(c.bodyA) && moves(c.bodyB))
+            parent[findRoot(parent, c.bodyA)] = findRoot(parent, c.bodyB);
+    }
+    // The pins of each set, in list order.
+    std::vector<std::int32_t> setBlock(bodies.size(), -1);
+    std::vector<std::vector<std::uint32_t>> groups;
+    for (std::uint32_t k = 0; k < m_joints.size(); ++k) {
+        const Constraint& c = m_joints[k];
+        if (c.type != model::JointType::Pin)
+            continue;
+        const std::uint32_t body = moves(c.bodyA) ? c.bodyA : moves(c.bodyB) ? c.bodyB : kWorld;
+        if (body == kWorld)
+            continue;
+        std::int32_t& group = setBlock[findRoot(parent, body)];
+        if (group < 0) {
+            group = static_cast<std::int32_t>(groups.size());
+            groups.emplace_back();
+        }
+        groups[static_cast<std::size_t>(group)].push_back(k);
+    }
+    for (std::vector<std::uint32_t>& group : groups) {
+        if (group.size() < 2 || group.size() > kMaxBlockPins)
+            continue;
+        std::vector<PinArms> arms;
+        for (const std::uint32_t k : group) {
+            const Constraint& c = m_joints[k];
+            arms.push_back({c.bodyA, c.bodyB, c.rA, c.rB, c.shareA, c.shareB});
+        }
+        const Eigen::MatrixXd matrix = pinBlockMatrix(bodies, arms, kWorld);
+        PinBlock pinBlock;
+        pinBlock.system.compute(matrix);
+        pinBlock.velocity.resize(static_cast<Eigen::Index>(2 * group.size()));
+        for (const std::uint32_t k : group)
+            m_joints[k].block = static_cast<std::int32_t>(m_blocks.size());
+        pinBlock.pins = std::move(group);
+        m_blocks.push_back(std::move(pinBlock));
+    }
 }
 
 void JointSolver::warmStart(std::span<SolverBody> bodies)
@@ -162,11 +284,35 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
     // 360 m/s at 1/240 s, and the soak's jointed scenes gained energy without bound or left the
     // box (seeds 18, 27, 49, 51, 61, 66, 69, 87, 111, 121, 195). The position passes remove the
     // error instead; they move bodies and give them no speed.
-    for (Constraint& c : m_joints) {
+    const auto relativeVelocity = [&](const Constraint& c) {
+        const SolverBody& a = bodyOf(bodies, c.bodyA);
+        const SolverBody& b = bodyOf(bodies, c.bodyB);
+        return Vec2(c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
+                    c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA)));
+    };
+    for (std::size_t index = 0; index < m_joints.size(); ++index) {
+        Constraint& c = m_joints[index];
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
-        const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
-                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA));
+        if (c.block >= 0) {
+            // A block is solved at its first pin, all its pins at once: the impulses that bring
+            // every anchor pair of the block together (the least ones, should the pins ask for the
+            // same thing twice).
+            PinBlock& block = m_blocks[static_cast<std::size_t>(c.block)];
+            if (block.pins.front() != index)
+                continue;
+            for (std::size_t k = 0; k < block.pins.size(); ++k)
+                block.velocity.segment<2>(2 * static_cast<Eigen::Index>(k)) = relativeVelocity(m_joints[block.pins[k]]);
+            const Eigen::VectorXd impulses = -block.system.solve(block.velocity);
+            for (std::size_t k = 0; k < block.pins.size(); ++k) {
+                Constraint& pin = m_joints[block.pins[k]];
+                const Vec2 impulse = impulses.segment<2>(2 * static_cast<Eigen::Index>(k));
+                pin.impulse += impulse;
+                applyJointImpulse(bodyOf(bodies, pin.bodyA), bodyOf(bodies, pin.bodyB), pin.rA, pin.rB, impulse);
+            }
+            continue;
+        }
+        const Vec2 dv = relativeVelocity(c);
         if (c.type == model::JointType::Pin) {
             // Linear in the velocities: the anchors move together, h·dv = 0.
             const Vec2 impulse = -(c.pinMass * dv);
@@ -229,7 +375,13 @@ void JointSolver::takeBackPushes(std::span<SolverBody> bodies) const
 bool JointSolver::solvePositions(std::span<SolverBody> bodies)
 {
     Scalar worst = 0;
-    for (Constraint& c : m_joints) {
+    for (std::size_t index = 0; index < m_joints.size(); ++index) {
+        Constraint& c = m_joints[index];
+        if (c.block >= 0) {
+            if (m_blocks[static_cast<std::size_t>(c.block)].pins.front() == index)
+                worst = std::max(worst, solveBlockPositions(m_blocks[static_cast<std::size_t>(c.block)], bodies));
+            continue;
+        }
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
         const Vec2 rA = rotate(c.localA, a.angle);
@@ -263,6 +415,41 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
         }
     }
     return worst <= constants::kLinearSlop;
+}
+
+Scalar JointSolver::solveBlockPositions(const PinBlock& block, std::span<SolverBody> bodies)
+{
+    // The pins' errors and lever arms where the bodies are now, and the impulses that remove
+    // every error at once to first order, as one pin's pass does for itself. A block whose worst
+    // error is over kMaxPositionCorrection takes that much of it (every pin's in proportion).
+    const auto n = static_cast<Eigen::Index>(block.pins.size());
+    std::vector<PinArms> arms;
+    arms.reserve(block.pins.size());
+    Eigen::VectorXd error(2 * n);
+    Scalar worst = 0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const Constraint& c = m_joints[block.pins[static_cast<std::size_t>(k)]];
+        const SolverBody& a = bodyOf(bodies, c.bodyA);
+        const SolverBody& b = bodyOf(bodies, c.bodyB);
+        const Vec2 rA = rotate(c.localA, a.angle);
+        const Vec2 rB = rotate(c.localB, b.angle);
+        const Vec2 d = b.position + rB - a.position - rA;
+        error.segment<2>(2 * k) = d;
+        worst = std::max(worst, d.norm());
+        arms.push_back({c.bodyA, c.bodyB, rA, rB});
+    }
+    if (worst > constants::kMaxPositionCorrection)
+        error *= constants::kMaxPositionCorrection / worst;
+    const Eigen::VectorXd impulses =
+        -Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(pinBlockMatrix(bodies, arms, kWorld)).solve(error);
+    for (Eigen::Index k = 0; k < n; ++k) {
+        Constraint& c = m_joints[block.pins[static_cast<std::size_t>(k)]];
+        const PinArms& arm = arms[static_cast<std::size_t>(k)];
+        const Vec2 impulse = impulses.segment<2>(2 * k);
+        applyPositionImpulse(bodyOf(bodies, c.bodyA), bodyOf(bodies, c.bodyB), arm.rA, arm.rB, impulse);
+        c.push += impulse;
+    }
+    return worst;
 }
 
 void JointSolver::storeImpulses(model::World& world) const

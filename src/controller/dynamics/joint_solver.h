@@ -12,6 +12,7 @@
 #include "model/world.h"
 
 #include <Eigen/Core>
+#include <Eigen/QR>
 
 #include <cstdint>
 #include <span>
@@ -79,11 +80,31 @@ private:
         Eigen::Matrix2d pinMass = Eigen::Matrix2d::Zero(); ///< pin: K⁻¹
         Scalar rodMass = 0; ///< rod: 1/K
         Vec2 impulse = Vec2::Zero(); ///< accumulated (rod: x only)
+        /// A pin solved with the others of its block (m_blocks index), or −1: alone.
+        std::int32_t block = -1;
     };
+
+    /// Pins that share moving bodies, a few of them, solved together: each velocity pass puts
+    /// every anchor pair of the block together at once, with the impulses of one linear system,
+    /// where a pass one pin at a time converges only slowly through a light body between heavy
+    /// ones or the world (docs/physics.md, "Joints").
+    struct PinBlock {
+        std::vector<std::uint32_t> pins; ///< m_joints indices, in list order
+        /// The system's matrix: block (k, l) is what pin l's impulse does to pin k's relative
+        /// anchor velocity; factored once per substep.
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> system;
+        Eigen::VectorXd velocity; ///< working: every pin's relative anchor velocity, m/s
+    };
+
+    /// Groups the pins that share moving bodies into blocks, and factors each block's matrix.
+    void buildBlocks(std::span<const SolverBody> bodies);
+    /// One position pass over a block's pins, all at once. Returns its worst pin error, m.
+    Scalar solveBlockPositions(const PinBlock& block, std::span<SolverBody> bodies);
 
     SolverBody& bodyOf(std::span<SolverBody> bodies, std::uint32_t index);
 
     std::vector<Constraint> m_joints;
+    std::vector<PinBlock> m_blocks;
     std::vector<Scalar> m_changes; ///< measurePushes's findings, kg·m²/s
     SolverBody m_world; ///< the fixed world: zero inverse mass, at the origin, never moves
 };
