@@ -58,10 +58,10 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // props (ContactSolver::findProps): the box now rests on the light body as on the wall behind it.
 // 131, 131-g2, 201, 264, 306 and 335, soft bodies that spun themselves up under explicit Euler
 // (or, 201, were flung out of a corner under RK4), by each grid keeping the angular momentum the
-// outside torque gives it through the integrator's step (soft/soft_spin.h). 239, a 7 kg box
-// between a pin to the world and a pin to a 0.6 t polygon, spun to 360 rad/s by pin passes one at a
-// time (the energy grew 56,000-fold in 0.2 s), by pins that share moving bodies being solved
-// together (joint_solver.cpp, PinBlock).
+// outside torque gives it through the integrator's step (SpinKeeper, integration/spin_keeper.h).
+// 239, a 7 kg box between a pin to the world and a pin to a 0.6 t polygon, spun to 360 rad/s by
+// pin passes one at a time (the energy grew 56,000-fold in 0.2 s), by pins that share moving
+// bodies being solved together (joint_solver.cpp, PinBlock).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "31", "49", "51", "61",
                                            "65", "66", "68", "69", "86", "87", "92", "111", "117", "121", "131",

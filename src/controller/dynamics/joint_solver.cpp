@@ -1,5 +1,7 @@
 #include "controller/dynamics/joint_solver.h"
 
+#include "controller/union_find.h"
+
 #include "model/constants.h"
 
 #include <Eigen/LU>
@@ -79,16 +81,6 @@ Eigen::Matrix2d pointResponse(const SolverBody& body, const Vec2& r, const Vec2&
     const Vec2 perpR(-r.y(), r.x());
     const Vec2 perpS(-s.y(), s.x());
     return body.invMass * Eigen::Matrix2d::Identity() + body.invInertia * perpR * perpS.transpose();
-}
-
-/// Root of x's set in a union–find forest, halving the path on the way.
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
 }
 
 /// One pin of a block as the block's matrix sees it: its bodies (kWorld for the world), the

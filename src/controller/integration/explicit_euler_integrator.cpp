@@ -1,5 +1,4 @@
 #include "controller/integration/integrator.h"
-#include "controller/soft/soft_spin.h"
 
 namespace impetus::controller {
 
@@ -18,10 +17,9 @@ void ExplicitEulerIntegrator::step(const model::World& world, std::span<const mo
         state.velocity += h * d.acceleration;
         state.angularVelocity += h * d.angularAcceleration;
     }
-    if (!world.softBodies.empty()) {
-        m_gridTorques.assign(world.softBodies.size(), 0);
-        addGridTorques(world, start, startDerivative, 1, m_gridTorques);
-        keepGridAngularMomentum(world, start, end, h, m_gridTorques);
+    if (m_spin.begin(world)) {
+        m_spin.addTorques(start, startDerivative, 1);
+        m_spin.keep(start, end, h);
     }
 }
 

@@ -4,6 +4,7 @@
 /// angular velocity advance together, so bodies joined by springs integrate as one coupled system.
 
 #include "controller/integration/force_model.h"
+#include "controller/integration/spin_keeper.h"
 #include "model/scalar.h"
 #include "model/world.h"
 
@@ -41,9 +42,10 @@ private:
 };
 
 /// Explicit (forward) Euler: x ← x + h·v, v ← v + h·a(x, v), both from the old state. First order;
-/// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step. A soft grid then
-/// gets the angular momentum that the torque from outside at the start of the step gives it
-/// (soft_spin.h): explicit Euler alone would spin it up by itself.
+/// on a harmonic oscillator its energy grows by exactly (1 + ω²h²) every step. Each group of
+/// bodies that pull on each other (a soft grid, rigid bodies on springs) then gets the angular
+/// momentum that the torque from outside at the start of the step gives it (spin_keeper.h):
+/// explicit Euler alone would spin it up by itself.
 class ExplicitEulerIntegrator final : public Integrator {
 public:
     void step(const model::World& world, std::span<const model::BodyState> start,
@@ -51,7 +53,7 @@ public:
     model::IntegratorKind kind() const override { return model::IntegratorKind::Euler; }
 
 private:
-    std::vector<Scalar> m_gridTorques;
+    SpinKeeper m_spin;
 };
 
 /// Semi-implicit (symplectic) Euler: v ← v + h·a(x, v), then x ← x + h·v with the new velocity.
@@ -66,9 +68,10 @@ public:
 
 /// Classical fourth-order Runge–Kutta: four derivative evaluations k₁…k₄ at t, t+h/2, t+h/2 and
 /// t+h, combined as y ← y + h/6·(k₁ + 2k₂ + 2k₃ + k₄). Fourth order: halving h divides the error
-/// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile). A
-/// soft grid then gets the angular momentum that the torque from outside, weighted over the four
-/// stages as the method weights their accelerations, gives it (soft_spin.h).
+/// by 16. Exact for motion whose position is a polynomial of degree ≤ 4 in t (a projectile). Each
+/// group of bodies that pull on each other then gets the angular momentum that the torque from
+/// outside, weighted over the four stages as the method weights their accelerations, gives it
+/// (spin_keeper.h).
 class Rk4Integrator final : public Integrator {
 public:
     void step(const model::World& world, std::span<const model::BodyState> start,
@@ -79,7 +82,7 @@ private:
     std::vector<model::BodyState> m_stage;
     std::vector<BodyDerivative> m_k2, m_k3, m_k4;
     ForceScratch m_scratch;
-    std::vector<Scalar> m_gridTorques;
+    SpinKeeper m_spin;
 };
 
 /// A new integrator of the given kind.

@@ -1,5 +1,4 @@
 #include "controller/integration/integrator.h"
-#include "controller/soft/soft_spin.h"
 
 namespace impetus::controller {
 
@@ -24,25 +23,23 @@ void Rk4Integrator::step(const model::World& world, std::span<const model::BodyS
                          std::span<const BodyDerivative> k1s, Scalar h, std::vector<model::BodyState>& end)
 {
     // The four stages of the classical method, each over the whole world so that coupled bodies
-    // see each other's intermediate states. A soft grid's torque from outside is summed over
-    // them with the method's weights.
-    const bool soft = !world.softBodies.empty();
-    if (soft) {
-        m_gridTorques.assign(world.softBodies.size(), 0);
-        addGridTorques(world, start, k1s, 1.0 / 6, m_gridTorques);
-    }
+    // see each other's intermediate states. The torque from outside on each group of bodies
+    // that pull on each other is summed over them with the method's weights.
+    const bool spin = m_spin.begin(world);
+    if (spin)
+        m_spin.addTorques(start, k1s, 1.0 / 6);
     advance(start, k1s, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k2, m_scratch);
-    if (soft)
-        addGridTorques(world, m_stage, m_k2, 2.0 / 6, m_gridTorques);
+    if (spin)
+        m_spin.addTorques(m_stage, m_k2, 2.0 / 6);
     advance(start, m_k2, h / 2, m_stage);
     computeDerivatives(world, m_stage, m_k3, m_scratch);
-    if (soft)
-        addGridTorques(world, m_stage, m_k3, 2.0 / 6, m_gridTorques);
+    if (spin)
+        m_spin.addTorques(m_stage, m_k3, 2.0 / 6);
     advance(start, m_k3, h, m_stage);
     computeDerivatives(world, m_stage, m_k4, m_scratch);
-    if (soft)
-        addGridTorques(world, m_stage, m_k4, 1.0 / 6, m_gridTorques);
+    if (spin)
+        m_spin.addTorques(m_stage, m_k4, 1.0 / 6);
 
     const Scalar w = h / 6;
     end.resize(start.size());
@@ -61,8 +58,8 @@ void Rk4Integrator::step(const model::World& world, std::span<const model::BodyS
         state.angularVelocity = s0.angularVelocity + w * (k1.angularAcceleration + 2 * k2.angularAcceleration +
                                                       2 * k3.angularAcceleration + k4.angularAcceleration);
     }
-    if (soft)
-        keepGridAngularMomentum(world, start, end, h, m_gridTorques);
+    if (spin)
+        m_spin.keep(start, end, h);
 }
 
 } // namespace impetus::controller
