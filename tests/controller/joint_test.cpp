@@ -174,6 +174,35 @@ TEST(PinJoint, HoldsTwoBodiesTogether)
     EXPECT_GT(std::abs(world.bodies[0].state.angularVelocity), 0.1); // the pair spins
 }
 
+// A bar hinged to the world at its top end by a pin, released at 30° and at 90°: nothing takes
+// energy out, so it swings for 20 s with its energy within a small bound of its start, at 1/60 s
+// as at 1/240 s. The pin's end condition used to move the anchor along its tangent, h·(v + ω × r), not on its
+// arc: the bar drifted off its hinge by its turn every step, the position passes put it back, and
+// the swing lost 0.4 % of its energy a second (8 % in 20 s at 30°, at either step).
+TEST(Pendulum, PinnedBarKeepsItsEnergyAtAnyStep)
+{
+    for (const Scalar h : {1.0 / 60.0, 1.0 / 240.0}) {
+        for (const Scalar degrees : {30.0, 90.0}) {
+            const Scalar theta0 = degrees * kPi / 180;
+            model::World world = makeEmptyWorld(IntegratorKind::Rk4, h, Vec2(0, -kG));
+            world.bodies.push_back(makeBox("bar", 1, 0.05, 1, rotate(Vec2(0, -0.5), theta0), theta0));
+            world.joints.push_back(pinAt(world, model::BodyId{0}, std::nullopt, Vec2::Zero()));
+            const Scalar energy = computeEnergy(world).total();
+            const Scalar swing = kG * 0.5 * (1 - std::cos(theta0)); // J, above the lowest point
+            Simulation simulation(settingsUnderTest());
+            Scalar worst = 0;
+            for (int i = 0; i < static_cast<int>(std::lround(20 / h)); ++i) {
+                simulation.step(world);
+                worst = std::max(worst, std::abs(computeEnergy(world).total() - energy));
+            }
+            // The bound of a method that solves the end condition (SHAKE): it oscillates with the
+            // swing and does not drift. Measured 0.02 % of the swing at 30°, 0.7 % at 90°.
+            EXPECT_LT(worst, 0.01 * swing) << degrees << "°, h = " << h;
+            EXPECT_LT(world.bodies[0].worldPoint(Vec2(0, 0.5)).norm(), 1e-3) << degrees << "°, h = " << h;
+        }
+    }
+}
+
 // A light link between a pin to the world and a heavy body: a 1 kg bar, 1.7 m long, pinned to the
 // world at one end and, 0.3 m past its other end, to the centre of a 1 t ball (0.25 m), the two
 // turning together at 2.5 rad/s in zero gravity (the ball at 5 m/s, 2 m out). The ball goes round
@@ -203,8 +232,10 @@ TEST(PinJoint, ALightLinkHoldsAHeavyBodyGoingRoundAtAnyStep)
             ASSERT_LT((link.worldPoint(Vec2(1.15, 0)) - load.state.position).norm(), 1e-4) << "h = " << h << ", step " << i;
             // The bar's end goes with the box: ω·R = |v|.
             ASSERT_NEAR(2 * link.state.angularVelocity, load.state.velocity.norm(), 1e-3) << "h = " << h << ", step " << i;
-            // A pin loses a little energy as the bodies turn (docs/physics.md, "Joints"), and
-            // gains none beyond rounding and the take-back of the position passes' turn.
+            // A pin between two bodies loses a little energy as they turn (3 % in these 5 s; the
+            // pin to the world follows its anchor's arc and loses none, docs/physics.md,
+            // "Joints"). It gains none but what the take-back of the position passes' turn adds
+            // where it must spin the pair up ("Conservation"): 4e-5 in the first step.
             ASSERT_LT(computeEnergy(world).total(), energy * (1 + 1e-4)) << "h = " << h << ", step " << i;
         }
     }

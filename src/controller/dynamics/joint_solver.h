@@ -72,6 +72,9 @@ private:
         /// moved on by a struck body's motion up to its last impact, m. The end velocities move
         /// the anchors on from there.
         Vec2 separation = Vec2::Zero();
+        /// How far the anchors' arcs over the step part from their tangents, B's less A's, over
+        /// h (m/s): added to their relative velocity in the end condition (see prepare).
+        Vec2 arc = Vec2::Zero();
         Scalar length = 0; ///< rod length, m
         /// Rod: the distance the velocity passes hold, |separation|, m. Its error against `length`
         /// is the position passes' to remove (solveVelocities says why).
