@@ -17,4 +17,10 @@ inline std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t 
     return x;
 }
 
+/// Groups items by the set of `parent` each belongs to: element[i] is the forest element item i
+/// stands for, or −1 for an item in no set. The groups come in the order of their first item,
+/// each with its items in order.
+std::vector<std::vector<std::uint32_t>> groupBySet(std::vector<std::uint32_t>& parent,
+                                                   const std::vector<std::int64_t>& element);
+
 } // namespace impetus::controller

@@ -238,22 +238,13 @@ void JointSolver::buildBlocks(std::span<const SolverBody> bodies)
             parent[findRoot(parent, c.bodyA)] = findRoot(parent, c.bodyB);
     }
     // The pins of each set, in list order.
-    std::vector<std::int32_t> setBlock(bodies.size(), -1);
-    std::vector<std::vector<std::uint32_t>> groups;
-    for (std::uint32_t k = 0; k < m_joints.size(); ++k) {
+    std::vector<std::int64_t> element(m_joints.size(), -1);
+    for (std::size_t k = 0; k < m_joints.size(); ++k) {
         const Constraint& c = m_joints[k];
-        if (c.type != model::JointType::Pin)
-            continue;
-        const std::uint32_t body = moves(c.bodyA) ? c.bodyA : moves(c.bodyB) ? c.bodyB : kWorld;
-        if (body == kWorld)
-            continue;
-        std::int32_t& group = setBlock[findRoot(parent, body)];
-        if (group < 0) {
-            group = static_cast<std::int32_t>(groups.size());
-            groups.emplace_back();
-        }
-        groups[static_cast<std::size_t>(group)].push_back(k);
+        if (c.type == model::JointType::Pin && (moves(c.bodyA) || moves(c.bodyB)))
+            element[k] = moves(c.bodyA) ? c.bodyA : c.bodyB;
     }
+    std::vector<std::vector<std::uint32_t>> groups = groupBySet(parent, element);
     for (std::vector<std::uint32_t>& group : groups) {
         if (group.size() < 2 || group.size() > kMaxBlockPins)
             continue;

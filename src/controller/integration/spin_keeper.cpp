@@ -28,26 +28,16 @@ bool SpinKeeper::begin(const model::World& world)
         m_parent.resize(count);
         for (std::uint32_t i = 0; i < count; ++i)
             m_parent[i] = i;
-        std::vector<bool> joined(count, false);
+        std::vector<std::int64_t> joined(count, -1); // the body itself, once a spring joins it
         for (const model::Spring& spring : world.springs) {
             if (!spring.bodyB || !joins(spring.bodyA.index) || !joins(spring.bodyB->index))
                 continue;
             m_parent[findRoot(m_parent, spring.bodyA.index)] = findRoot(m_parent, spring.bodyB->index);
-            joined[spring.bodyA.index] = joined[spring.bodyB->index] = true;
+            joined[spring.bodyA.index] = spring.bodyA.index;
+            joined[spring.bodyB->index] = spring.bodyB->index;
         }
         // The groups in the order of their first body, each body in list order.
-        std::vector<std::int32_t> groupOf(count, -1);
-        std::vector<std::vector<std::uint32_t>> groups;
-        for (std::uint32_t i = 0; i < count; ++i) {
-            if (!joined[i])
-                continue;
-            std::int32_t& group = groupOf[findRoot(m_parent, i)];
-            if (group < 0) {
-                group = static_cast<std::int32_t>(groups.size());
-                groups.emplace_back();
-            }
-            groups[static_cast<std::size_t>(group)].push_back(i);
-        }
+        const auto groups = groupBySet(m_parent, joined);
         for (const std::vector<std::uint32_t>& group : groups) {
             m_first.push_back(static_cast<std::uint32_t>(m_members.size()));
             for (const std::uint32_t i : group)
