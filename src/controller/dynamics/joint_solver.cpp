@@ -105,9 +105,7 @@ Eigen::MatrixXd pinBlockMatrix(std::span<const SolverBody> bodies, std::span<con
 {
     const auto n = static_cast<Eigen::Index>(pins.size());
     Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    const auto moves = [&](std::uint32_t index) {
-        return index != world && (bodies[index].invMass > 0 || bodies[index].invInertia > 0);
-    };
+    const auto moves = [&](std::uint32_t index) { return index != world && movable(bodies[index]); };
     for (Eigen::Index k = 0; k < n; ++k) {
         const PinArms& pk = pins[static_cast<std::size_t>(k)];
         for (Eigen::Index l = 0; l < n; ++l) {
@@ -227,9 +225,7 @@ void JointSolver::buildBlocks(std::span<const SolverBody> bodies)
         return;
     // The pins' moving bodies, joined into sets by the pins: the world and fixed bodies join
     // nothing, as they do not move whatever the impulses.
-    const auto moves = [&](std::uint32_t index) {
-        return index != kWorld && (bodies[index].invMass > 0 || bodies[index].invInertia > 0);
-    };
+    const auto moves = [&](std::uint32_t index) { return index != kWorld && movable(bodies[index]); };
     std::vector<std::uint32_t> parent(bodies.size());
     for (std::uint32_t i = 0; i < parent.size(); ++i)
         parent[i] = i;
