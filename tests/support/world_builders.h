@@ -109,7 +109,9 @@ inline model::World makeLoadedPlanks(int planks, int balls)
     constexpr Scalar kSpacing = 0.25;
     const Scalar plankWidth = balls * kSpacing;
     model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, 1.0 / 240.0, Vec2(0, -9.81));
-    world.bodies.push_back(withMaterial(makeGround("ground", planks * (plankWidth + 1) + 10, 1), 0.0, 0.5));
+    // The ground lies under the middle of the row of planks, so that every plank rests on it.
+    const Vec2 middle((planks - 1) * (plankWidth + 1) / 2, 0);
+    world.bodies.push_back(withMaterial(makeGround("ground", planks * (plankWidth + 1) + 10, 1, middle), 0.0, 0.5));
     for (int p = 0; p < planks; ++p) {
         const Scalar centre = p * (plankWidth + 1);
         world.bodies.push_back(withMaterial(
