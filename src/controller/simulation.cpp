@@ -827,6 +827,10 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
             m_contactSolver.takeBackPushes(m_bodies);
             m_jointSolver.takeBackPushes(m_bodies);
         });
+        // What is left is the smooth forces' timing (a spring's pull taken by each end from its
+        // own last impact): each island nothing outside touches keeps its angular momentum.
+        if (IslandSpin::applies(world))
+            m_islandSpin.keep(world, m_startStates, m_bodies, m_contactSolver.constraints());
     }
     inHalves(bodyTasks(world), total, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
@@ -835,6 +839,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
             m_endStates[i].position = m_bodies[i].position;
             m_endStates[i].angle = m_bodies[i].angle;
             m_endStates[i].velocity = m_bodies[i].velocity; // takeBackPushes may turn it
+            m_endStates[i].angularVelocity = m_bodies[i].angularVelocity; // and IslandSpin spin it
         }
     });
     m_profile.positionMs += millisecondsSince(positionStart);

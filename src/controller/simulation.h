@@ -6,6 +6,7 @@
 #include "controller/collision_events.h"
 #include "controller/collision/colliders.h"
 #include "controller/dynamics/contact_solver.h"
+#include "controller/dynamics/island_spin.h"
 #include "controller/integration/integrator.h"
 #include "controller/dynamics/joint_solver.h"
 #include "controller/soft/soft_damping.h"
@@ -232,6 +233,7 @@ private:
     BroadPhase m_broadPhase;
     ContactSolver m_contactSolver;
     JointSolver m_jointSolver;
+    IslandSpin m_islandSpin; ///< closed islands' angular momentum in zero gravity (island_spin.h)
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;
     CollisionScratch m_collisionScratch;
