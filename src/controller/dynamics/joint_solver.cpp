@@ -74,6 +74,12 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
 /// (JointSolver::prepare), rad: an eighth of a turn, as spinSubsteps allows all but circles.
 constexpr Scalar kMaxArcTurn = std::numbers::pi / 4;
 
+/// How much faster than its arcs a block's bodies may be set moving by them (JointSolver::
+/// buildBlocks): an anchor's arc is a correction of h·ω²·r to its velocity, which moves the
+/// bodies of a sound block by about as much. A block that is nearly a mechanism (three pins
+/// almost in a line) answers it with speeds thousands of times larger.
+constexpr Scalar kMaxArcAmplification = 10;
+
 /// The most pins solved together as one block (JointSolver::PinBlock): a matrix of 2n × 2n. A
 /// larger group (a chain of many links, a mesh of pins) goes one pin at a time.
 constexpr std::size_t kMaxBlockPins = 8;
@@ -136,6 +142,59 @@ void applyJointImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2&
 }
 
 } // namespace
+
+void JointSolver::keepArcsIfSound(const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>& system,
+                                  std::span<const std::uint32_t> pins, std::span<const SolverBody> bodies)
+{
+    // The impulses the block's arcs alone ask for, and the speeds they give its bodies. Three
+    // pins almost in a line (a body pinned to the world and to a second one, itself pinned to the
+    // world, all three hinges within a milliradian of one line: soak seed 1135) make the block's
+    // matrix nearly singular: the bodies may turn about the line's middle hinge, to first order,
+    // without opening a pin. The arcs ask for a little motion off the tangents that such a turn
+    // alone could give, and the block answered with 600 m/s for a 2 m/s arc. Such a block keeps
+    // its anchors on their tangents, as joints between two bodies always do.
+    const auto n = static_cast<Eigen::Index>(pins.size());
+    Eigen::VectorXd arcs(2 * n);
+    Scalar largestArc = 0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const Vec2& arc = m_joints[pins[static_cast<std::size_t>(k)]].arc;
+        arcs.segment<2>(2 * k) = arc;
+        largestArc = std::max(largestArc, arc.norm());
+    }
+    if (largestArc == 0)
+        return;
+    const Eigen::VectorXd impulses = -system.solve(arcs);
+    struct Motion {
+        std::uint32_t body;
+        Vec2 velocity = Vec2::Zero();
+        Scalar spin = 0;
+        Scalar arm = 0;
+    };
+    std::vector<Motion> motions;
+    const auto add = [&](std::uint32_t body, const Vec2& r, const Vec2& impulse) {
+        if (body == kWorld || !movable(bodies[body]))
+            return;
+        auto it = std::find_if(motions.begin(), motions.end(), [&](const Motion& m) { return m.body == body; });
+        if (it == motions.end())
+            it = motions.insert(motions.end(), Motion{body});
+        it->velocity += bodies[body].invMass * impulse;
+        it->spin += bodies[body].invInertia * cross(r, impulse);
+        it->arm = std::max(it->arm, r.norm());
+    };
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const Constraint& pin = m_joints[pins[static_cast<std::size_t>(k)]];
+        const Vec2 impulse = impulses.segment<2>(2 * k);
+        add(pin.bodyA, pin.rA, -impulse);
+        add(pin.bodyB, pin.rB, impulse);
+    }
+    Scalar fastest = 0;
+    for (const Motion& m : motions)
+        fastest = std::max(fastest, m.velocity.norm() + std::abs(m.spin) * m.arm);
+    if (!(fastest <= kMaxArcAmplification * largestArc)) {
+        for (const std::uint32_t k : pins)
+            m_joints[k].arc = Vec2::Zero();
+    }
+}
 
 SolverBody& JointSolver::bodyOf(std::span<SolverBody> bodies, std::uint32_t index)
 {
@@ -252,6 +311,7 @@ void JointSolver::buildBlocks(std::span<const SolverBody> bodies)
         const Eigen::MatrixXd matrix = pinBlockMatrix(bodies, arms, kWorld);
         PinBlock pinBlock;
         pinBlock.system.compute(matrix);
+        keepArcsIfSound(pinBlock.system, group, bodies);
         pinBlock.velocity.resize(static_cast<Eigen::Index>(2 * group.size()));
         for (const std::uint32_t k : group)
             m_joints[k].block = static_cast<std::int32_t>(m_blocks.size());

@@ -101,6 +101,10 @@ private:
 
     /// Groups the pins that share moving bodies into blocks, and factors each block's matrix.
     void buildBlocks(std::span<const SolverBody> bodies);
+    /// Takes the arcs off a block's pins when the block, nearly a mechanism, would answer them
+    /// with speeds far above their own (kMaxArcAmplification).
+    void keepArcsIfSound(const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>& system,
+                         std::span<const std::uint32_t> pins, std::span<const SolverBody> bodies);
     /// One position pass over a block's pins, all at once. Returns its worst pin error, m.
     Scalar solveBlockPositions(const PinBlock& block, std::span<SolverBody> bodies);
 
