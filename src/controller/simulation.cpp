@@ -35,6 +35,12 @@ double millisecondsSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+/// A large world's largest mean travel per substep, as a fraction of each body's bounding radius
+/// (crowdSubsteps). The spinner's heap flung by its arm travels 0.4–0.5 of its radius a step of
+/// 1/240 s on average, and about 0.14 once it goes round with the arm; a rain of polygons or a
+/// turning box of circles under 0.1.
+constexpr Scalar kMaxCrowdTravelPerSubstep = 0.25;
+
 /// The substeps that bring a quantity that grows with the substep to its limit, given its ratio
 /// to the limit at one substep: ⌈ratio⌉, at least 1, at most kMaxSolverSubsteps (also for a NaN).
 int substepsForRatio(Scalar ratio)
@@ -48,12 +54,13 @@ int substepsForRatio(Scalar ratio)
 
 Scalar fastestTravel(const model::World& world, Scalar h)
 {
+    // Every body that moves, a fixed one included: a moving fixed body (the spinner's arm, a
+    // turning drum) strikes what it meets, and the margins of a whole step give those bodies
+    // 2·h times its speed.
     Scalar fastest = 0;
     for (const model::Body& body : world.bodies) {
-        if (!body.fixed) {
-            fastest = std::max(fastest, body.state.velocity.norm() +
-                                            std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
-        }
+        fastest = std::max(fastest, body.state.velocity.norm() +
+                                        std::abs(body.state.angularVelocity) * body.geometry.boundingRadius);
     }
     return fastest * h;
 }
@@ -99,6 +106,22 @@ int spinSubsteps(const model::World& world, Scalar h)
             fastest = std::max(fastest, std::abs(body.state.angularVelocity));
     }
     return substepsForRatio(fastest * h / kMaxTurnPerSubstep);
+}
+
+int crowdSubsteps(const model::World& world, Scalar h)
+{
+    if (!(h > 0) || world.bodies.size() < constants::kLocalStrikeShareMinBodies)
+        return 1;
+    Scalar travel = 0;
+    std::size_t count = 0;
+    for (const model::Body& body : world.bodies) {
+        const Scalar radius = body.geometry.boundingRadius;
+        if (body.fixed || body.soft || !(radius > 0))
+            continue;
+        travel += (body.state.velocity.norm() + std::abs(body.state.angularVelocity) * radius) * h / radius;
+        ++count;
+    }
+    return count == 0 ? 1 : substepsForRatio(travel / static_cast<Scalar>(count) / kMaxCrowdTravelPerSubstep);
 }
 
 Simulation::Simulation(SolverSettings settings)
@@ -665,9 +688,10 @@ int Simulation::substepsFor(model::World& world, bool& collided)
     collided = false;
     const Scalar h = world.settings.timeStep;
     // What the contacts and joints need: substeps of at most the solver's step, in which no body
-    // but a circle turns by more than an eighth of a turn (spinSubsteps). A world in free flight
-    // keeps the user's step, however fast its bodies spin.
-    const int split = std::max(solverSubsteps(h, m_settings.maxSubstep), spinSubsteps(world, h));
+    // but a circle turns by more than an eighth of a turn (spinSubsteps) and a large world's
+    // bodies travel a quarter of their size on average at most (crowdSubsteps). A world in free
+    // flight keeps the user's step, however fast its bodies move.
+    const int split = std::max({solverSubsteps(h, m_settings.maxSubstep), spinSubsteps(world, h), crowdSubsteps(world, h)});
     // What the integrators need to stay stable, contacts or not.
     const int stable = std::max(m_stability.substeps, dragSubsteps(world, h));
     // Joints always need the split, and so does a world that ended its last step with contacts

@@ -75,8 +75,16 @@ int dragSubsteps(const model::World& world, Scalar h);
 /// spinning one, fixed bodies included; 1 for slower spins, at most constants::kMaxSolverSubsteps.
 int spinSubsteps(const model::World& world, Scalar h);
 
-/// How far the fastest movable body of `world` travels in h seconds at its present speed, m: its
-/// speed plus its spin times its bounding radius, times h.
+/// The equal substeps a step of h seconds needs so that a large world's dynamic bodies travel, on
+/// average, no more than a quarter of their bounding radius within one (kMaxCrowdTravelPerSubstep):
+/// each contact's margins grow with the travel, and a heap flung at 100–200 m/s (the spinner's
+/// opening) made dozens of speculative contacts a body, which cost more than the substeps that
+/// keep each body among its neighbours. 1 for a world of fewer than
+/// constants::kLocalStrikeShareMinBodies bodies, whose step is split for its physics alone.
+int crowdSubsteps(const model::World& world, Scalar h);
+
+/// How far the fastest moving body of `world` travels in h seconds at its present speed, m: its
+/// speed plus its spin times its bounding radius, times h. Fixed bodies that move count too.
 Scalar fastestTravel(const model::World& world, Scalar h);
 
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built

@@ -656,6 +656,53 @@ TEST(AnyStepWork, FieldFlyingTogetherTakesNoStrikeShare)
         ASSERT_EQ(box.state.velocity, velocity);
 }
 
+// A large world whose bodies travel far in a step, on average more than a quarter of their
+// bounding radius, is split so that each substep's margins keep each body among its neighbours
+// (the spinner's heap flung by its arm made dozens of speculative contacts a body). A small world
+// and a world at rest are not; the fastest body alone does not split a large world.
+TEST(SolverSubsteps, LargeWorldsTravellingFarSplitToAQuarterOfTheirSizeOnAverage)
+{
+    model::World world = fieldOfBoxes(20, 20, 0.1);
+    ASSERT_GE(world.bodies.size(), constants::kLocalStrikeShareMinBodies);
+    const Scalar radius = world.bodies[0].geometry.boundingRadius; // √2 · 0.25 m
+    EXPECT_EQ(crowdSubsteps(world, 1.0 / 240.0), 1);
+    // Every box 2.4 radii a step: 9.6 quarters, ten substeps (39 at 1/60 s).
+    for (model::Body& box : world.bodies)
+        box.state.velocity = Vec2(0, 2.4 * radius * 240);
+    EXPECT_EQ(crowdSubsteps(world, 1.0 / 240.0), 10);
+    EXPECT_EQ(crowdSubsteps(world, 1.0 / 60.0), 39);
+    // Half of them at rest: 4.8 quarters on average.
+    for (std::size_t i = 0; i < world.bodies.size(); i += 2)
+        world.bodies[i].state.velocity = Vec2::Zero();
+    EXPECT_EQ(crowdSubsteps(world, 1.0 / 240.0), 5);
+    // One box 50 radii a step and the rest at rest: 0.125 radii on average.
+    for (model::Body& box : world.bodies)
+        box.state.velocity = Vec2::Zero();
+    world.bodies[7].state.velocity = Vec2(50 * radius * 240, 0);
+    EXPECT_EQ(crowdSubsteps(world, 1.0 / 240.0), 1);
+    // A small world is split for its physics alone.
+    model::World small = fieldOfBoxes(4, 4, 0.1);
+    for (model::Body& box : small.bodies)
+        box.state.velocity = Vec2(0, 2.4 * radius * 240);
+    EXPECT_EQ(crowdSubsteps(small, 1.0 / 240.0), 1);
+}
+
+// A fixed body that moves (a paddle, the spinner's arm) counts as travelling: a step with one is
+// never solved on contacts found once with the whole step's margins, which would give the bodies
+// it can strike 2·h times its speed and, at 1/60 s, every body near the spinner's arm a share of
+// 6.7 m (its first step: 294,000 contacts a substep and 5.1 s; now 68,000 and 1.1 s).
+TEST(SolverSubsteps, AMovingFixedBodyCountsAsTravelling)
+{
+    model::World world = fieldOfBoxes(2, 1, 0.1);
+    EXPECT_EQ(fastestTravel(world, 0.1), 0);
+    model::Body paddle = makeBox("paddle", 1.0, 0.1, 2.0, Vec2(-3, 0));
+    paddle.fixed = true;
+    paddle.state.velocity = Vec2(10, 0);
+    paddle.updateDerived();
+    world.bodies.push_back(paddle);
+    EXPECT_DOUBLE_EQ(fastestTravel(world, 0.1), 1.0);
+}
+
 // Nor do they need contacts for their own travel: what brings two surfaces together is the speed
 // of one relative to the other. Boxes 0.3 m apart flying together at 100 m/s can meet no
 // neighbour within a step, at 1/240 s or at 1/60 s; each box's own margin (0.42 m at 1/240 s,
