@@ -37,8 +37,8 @@ double millisecondsSince(Clock::time_point start)
 
 /// A large world's largest mean travel per substep, as a fraction of each body's bounding radius
 /// (crowdSubsteps). The spinner's heap flung by its arm travels 0.4–0.5 of its radius a step of
-/// 1/240 s on average, and about 0.14 once it goes round with the arm; a rain of polygons or a
-/// turning box of circles under 0.1.
+/// 1/240 s on average, and about 0.14 once it goes round with the arm; the benchmarks' rain of
+/// polygons and turning box of circles stay under it (their steps of 1/240 s are not split).
 constexpr Scalar kMaxCrowdTravelPerSubstep = 0.25;
 
 /// The substeps that bring a quantity that grows with the substep to its limit, given its ratio

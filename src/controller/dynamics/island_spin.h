@@ -7,7 +7,7 @@
 /// computed where its ends were at the step's start, but a body whose contact forces act after
 /// its last impact, at T·h, takes the pull from there, and its partner from its own T. The two
 /// halves of the pull then act along parallel lines a little apart, and turn the pair by
-/// h²·(T_A·v_A − T_B·v_B) × F a step: a zero-g pile with four springs drifted by 3e-5 to 1e-4
+/// h²·(T_A·v_A − T_B·v_B) × F a step: a zero-g pile with four springs drifted by 4e-5 to 2e-4
 /// of its angular momentum in 10 s. An island that nothing outside it touches (no fixed body, no
 /// pin to the world, no spring to a world point) in a world with no gravity and no drag has no
 /// torque on it at all, so its angular momentum about any point must come out of the step as it
