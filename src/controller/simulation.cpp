@@ -233,7 +233,6 @@ void Simulation::collide(const model::World& world, Scalar h)
     // larger of the halves' (a maximum, so the same either way).
     m_margins.resize(n);
     m_strikeSpeeds.resize(n);
-    m_travelSpeeds.resize(n);
     std::array<Scalar, 2> fastestOf{};
     const auto ownMargins = [&](std::size_t begin, std::size_t end) {
         Scalar fastest = 0;
@@ -246,7 +245,6 @@ void Simulation::collide(const model::World& world, Scalar h)
             // travel), but a moving one strikes: the world's share counts it at its fastest
             // point, a large world at its speed where it meets each body (addStrikeShares).
             m_strikeSpeeds[i] = body.fixed ? 0 : speed;
-            m_travelSpeeds[i] = speed;
             fastest = std::max(fastest, speed);
             m_margins[i] = constants::kSpeculativeMargin;
             m_margins[i] += h * speed + h * h * (d.acceleration.norm() +
@@ -275,7 +273,6 @@ void Simulation::collide(const model::World& world, Scalar h)
                                           h * h * m_startDerivatives[next].acceleration.norm());
         }
         m_margins[grid.body.index] = constants::kSpeculativeMargin + travel;
-        m_travelSpeeds[grid.body.index] = 0; // pairs with a soft body keep both margins whole
         m_strikeSpeeds[grid.body.index] = speed;
         fastest = std::max(fastest, speed);
     }
@@ -318,7 +315,7 @@ void Simulation::collide(const model::World& world, Scalar h)
             const ProxyPair& pair = m_pairs[k];
             const ColliderPiece& a = pieces[pair.first];
             const ColliderPiece& b = pieces[pair.second];
-            const Scalar distance = pairDistance(world, a.body, b.body, h);
+            const Scalar distance = pairDistance(a.body, b.body, h);
             ContactSolver::PairManifold& slot = m_manifolds[k];
             slot.bodyA = a.solver;
             slot.pieceA = a.piece;
@@ -351,20 +348,21 @@ Scalar Simulation::approachSpeed(const model::World& world, std::uint32_t first,
            std::abs(b.angularVelocity) * world.bodies[second].geometry.boundingRadius;
 }
 
-Scalar Simulation::pairDistance(const model::World& world, std::uint32_t first, std::uint32_t second, Scalar h) const
+Scalar Simulation::pairDistance(std::uint32_t first, std::uint32_t second, Scalar h) const
 {
     const Scalar margins = m_margins[first] + m_margins[second];
     if (m_entries[first] == Entry::SoftOwner || m_entries[second] == Entry::SoftOwner)
         return margins;
-    // Each margin took h times its body's own speed for its travel; what brings the two surfaces
-    // together is the speed of one relative to the other, at most the difference of their
-    // velocities plus each one's spin at its bounding radius, never more than the sum. Bodies
-    // flying together (a heap thrown by the spinner's arm at 100 m/s) then keep contacts with
-    // the neighbours they can meet, not with every body within 2·h·100 m/s. Everything else the
-    // margins hold (the constant margin, the acceleration's share, the strike shares) stays.
-    const Scalar approach = approachSpeed(world, first, second);
-    const Scalar travel = m_travelSpeeds[first] + m_travelSpeeds[second];
-    return margins - h * std::max<Scalar>(0, travel - approach);
+    // Each margin took h times its body's own speed, |v| + |ω|·r, for its travel; what brings the
+    // two surfaces together is the speed of one relative to the other, at most |v_A − v_B| plus
+    // both spins' share (approachSpeed), never more than the sum. The spins' shares are in both
+    // and cancel: the pair gives back h·(|v_A| + |v_B| − |v_A − v_B|) ≥ 0. Bodies flying together
+    // (a heap thrown by the spinner's arm at 100 m/s) then keep contacts with the neighbours they
+    // can meet, not with every body within 2·h·100 m/s. Everything else the margins hold (the
+    // constant margin, the acceleration's share, the strike shares) stays.
+    const Vec2& a = m_startStates[first].velocity;
+    const Vec2& b = m_startStates[second].velocity;
+    return margins - h * std::max<Scalar>(0, a.norm() + b.norm() - (a - b).norm());
 }
 
 void Simulation::addStrikeShares(const model::World& world, Scalar h)

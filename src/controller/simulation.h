@@ -171,7 +171,7 @@ private:
     Scalar approachSpeed(const model::World& world, std::uint32_t first, std::uint32_t second) const;
     /// How far apart two bodies' pieces may be for their pair to get contact points: their
     /// margins, with the two travels replaced by the travel towards each other (rigid pairs).
-    Scalar pairDistance(const model::World& world, std::uint32_t first, std::uint32_t second, Scalar h) const;
+    Scalar pairDistance(std::uint32_t first, std::uint32_t second, Scalar h) const;
     /// The broad phase of a world with soft bodies: fills m_pairs (piece indices, sorted).
     void findPairsWithSoftBodies(const model::World& world);
     void integratePositions(const model::World& world, Scalar h);
@@ -219,9 +219,6 @@ private:
     /// body's fastest ellipse's.
     std::vector<Scalar> m_strikeSpeeds;
     std::vector<Scalar> m_strikeShares; ///< per body, what addStrikeShares adds to its margin, m
-    /// Per body, the speed its own margin took for its travel (|v| + |ω|·bounding radius), m/s;
-    /// a pair of rigid bodies trades the two for the speed at which they approach each other.
-    std::vector<Scalar> m_travelSpeeds;
     /// Per body, the fastest striker that can reach it, blows passed on included, m/s
     std::vector<Scalar> m_reachSpeeds;
     std::vector<Scalar> m_handedSpeeds; ///< the next round of m_reachSpeeds
