@@ -751,6 +751,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     if (m_ledger)
         m_ledger->afterImpacts(m_bodies, m_contactSolver.impactNormalWork(), m_contactSolver.impactFrictionWork());
     m_profile.contacts += static_cast<int>(m_contactSolver.constraints().size());
+    m_profile.batchLanes += static_cast<int>(m_contactSolver.batchLaneCount());
     m_profile.impactsMs += millisecondsSince(impactsStart);
     double solveMs = millisecondsSince(solveStart);
 

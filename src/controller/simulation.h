@@ -37,6 +37,9 @@ struct StepProfile {
     double eventsMs = 0; ///< colliding flags, contact-begin events, contact records (not in solveMs)
     double totalMs = 0; ///< the whole step
     int contacts = 0; ///< contact constraints (pairs of pieces in contact or speculative)
+    /// Lanes of the batched velocity passes, padding included (ContactSolver::batchLaneCount);
+    /// 0 in a step that is not batched. Summed over substeps, as contacts.
+    int batchLanes = 0;
     int impacts = 0; ///< impacts resolved
     int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
     /// Collision passes (broad and narrow phase) the step ran: one for a rigid world at rest or

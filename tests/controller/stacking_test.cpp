@@ -145,6 +145,39 @@ TEST(Stacking, APlankWithMoreContactsThanColoursComesToRest)
     EXPECT_NEAR(carried / world.settings.timeStep, weight, 1e-6 * weight);
 }
 
+// Sixteen planks of eighty balls each, every world batched: each plank has 81 contacts, 17 more
+// than a body has colours. Those 17 are coloured again with the other planks' (a second round
+// of colours), so they fill pairs of batches as the first 64 colours do, where each took a pair
+// of batches of its own before (seven lanes of padding to one contact: 1,904 lanes of padding for
+// 1,296 contacts). The world is large enough to be solved in two halves of eight planks, whose
+// colours then hold eight contacts each, a pair of batches. The planks and balls still come to
+// rest at their true heights.
+TEST(Stacking, ContactsBeyondTheColoursShareTheirBatches)
+{
+    constexpr int kPlanks = 16;
+    model::World world = testing::makeLoadedPlanks(kPlanks, 80);
+    SolverSettings settings = settingsUnderTest();
+    settings.batchMinConstraints = 0;
+    Simulation simulation(settings);
+    int loaded = 0; // steps with every ball on its plank (the balls start a few millimetres up)
+    for (int i = 0; i < 240; ++i) {
+        simulation.step(world);
+        const StepProfile& profile = simulation.profile();
+        if (profile.contacts >= kPlanks * 81)
+            ++loaded;
+        // Padding only where a colour's last pair of batches is not full.
+        ASSERT_LE(profile.batchLanes, profile.contacts + profile.contacts / 4) << "step " << i;
+    }
+    EXPECT_GT(loaded, 200);
+    for (const model::Body& body : world.bodies) {
+        if (body.fixed)
+            continue;
+        const bool plank = body.name.starts_with("plank");
+        EXPECT_LT(body.state.velocity.norm(), 1e-6) << body.name;
+        EXPECT_NEAR(body.state.position.y(), plank ? 0.1 : 0.3, 2 * constants::kLinearSlop) << body.name;
+    }
+}
+
 // A tonne set down on a 0.3 kg block on the floor, at the default step and at 1/60 s, under
 // semi-implicit Euler and RK4: the block holds it at its true height, as a rigid block must. The
 // velocity passes alone take about 1/3,300 of the tonne's approach a pass through the block, and

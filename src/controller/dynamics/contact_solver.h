@@ -166,6 +166,9 @@ public:
     void setImpactLog(std::vector<ImpactRecord>* log) { m_impactLog = log; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
+    /// The lanes of this step's batches, padding included (0 when it is not batched): each colour
+    /// fills whole pairs of batches, and a contact that finds no colour free takes a pair alone.
+    std::size_t batchLaneCount() const { return m_batched ? m_batchLanes.size() : 0; }
     /// Starts the velocity passes: packs the constraints for them (unless prepare() has put them
     /// in batches) and applies last step's contact-force impulses (warm starting).
     /// `sharedVelocities`: something else (the joints) changes the bodies' velocities between this
@@ -455,6 +458,10 @@ private:
     std::vector<std::uint64_t> m_colourMasks; ///< per body: the colours its constraints have taken
     std::array<std::vector<std::uint8_t>, 3> m_colourOf; ///< per group: each constraint's colour
     std::array<std::vector<std::uint32_t>, 3> m_groupLanes; ///< per group: its lanes, from 0
+    /// Per group: the constraints (places in the group) a colouring round has not coloured yet,
+    /// and those it leaves to the next.
+    std::array<std::vector<std::uint32_t>, 3> m_uncoloured;
+    std::array<std::vector<std::uint32_t>, 3> m_uncolouredNext;
 };
 
 } // namespace impetus::controller
