@@ -2,6 +2,7 @@
 
 #include "controller/collision/narrow_phase.h"
 #include "controller/energy_ledger.h"
+#include "controller/large_arrays.h"
 #include "controller/soft/soft_body_builder.h"
 
 #include <algorithm>
@@ -309,7 +310,7 @@ void Simulation::collide(const model::World& world, Scalar h)
     const Clock::time_point narrowStart = Clock::now();
     // Each pair's manifold goes to its own slot, so a large world's pairs can be split between
     // two threads and still come out in the broad phase's order.
-    m_manifolds.resize(m_pairs.size());
+    resizeLarge(m_manifolds, m_pairs.size());
     const auto collideRange = [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const ProxyPair& pair = m_pairs[k];

@@ -4,6 +4,7 @@
 #include "controller/dynamics/contact_solver.h"
 #include "controller/dynamics/contact_solver_detail.h"
 
+#include "controller/large_arrays.h"
 #include "controller/transform.h"
 #include "model/constants.h"
 
@@ -81,9 +82,9 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     }
     const std::size_t firstCount = counts[0];
     const std::size_t count = counts[0] + counts[1];
-    m_constraints.resize(count);
-    m_constraintBodies.resize(count);
-    m_records.resize(count);
+    resizeLarge(m_constraints, count);
+    resizeLarge(m_constraintBodies, count);
+    resizeLarge(m_records, count);
     m_manifoldOf.resize(count);
     m_previousOf.resize(count);
     // Every contact needs its bodies' frames: each body's cosine and sine are taken once.
@@ -103,8 +104,8 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     // lane while it is at hand.
     partition(bodies);
     if (m_batched) {
-        m_batches.resize(m_batchLanes.size() / kBatchLanes);
-        m_positionBatches.resize(m_batches.size());
+        resizeLarge(m_batches, m_batchLanes.size() / kBatchLanes);
+        resizeLarge(m_positionBatches, m_batches.size());
     }
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
