@@ -2,7 +2,7 @@
 
 // Growing the step's largest arrays (contact constraints and their batches, tens of megabytes in a
 // world of thousands of bodies) without touching fresh memory all at once (docs/benchmarks.md,
-// "The spinner's opening").
+// "2026-11-28, evening: contacts beyond the colours, and arrays that grow ahead").
 
 #include <algorithm>
 #include <cstddef>

@@ -8,9 +8,9 @@
 #include "model/constants.h"
 
 #include <algorithm>
-#include <numeric>
 #include <bit>
 #include <cmath>
+#include <numeric>
 
 namespace impetus::controller {
 
@@ -210,10 +210,14 @@ void ContactSolver::colourGroup(std::span<const SolverBody> bodies, std::size_t 
     for (std::size_t round = 0; round < kColourRounds && !left.empty(); ++round) {
         // Each round's colours start afresh on the bodies it colours. (In the first, the
         // constraints joining the halves meet bodies that the halves have coloured already.)
+        // Only movable bodies have masks: a fixed body may be shared with the other half, which
+        // is coloured at the same time on the other thread.
         if (round > 0 || g == 2) {
             for (const std::uint32_t k : left) {
-                m_colourMasks[m_constraintBodies[group[k]][0]] = 0;
-                m_colourMasks[m_constraintBodies[group[k]][1]] = 0;
+                for (const std::uint32_t body : m_constraintBodies[group[k]]) {
+                    if (movable(bodies[body]))
+                        m_colourMasks[body] = 0;
+                }
             }
         }
         leftAfter.clear();

@@ -167,7 +167,8 @@ public:
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
     /// The lanes of this step's batches, padding included (0 when it is not batched): each colour
-    /// fills whole pairs of batches, and a contact that finds no colour free takes a pair alone.
+    /// fills whole pairs of batches, and a contact that finds no colour free in any round takes a
+    /// pair alone (colourGroup).
     std::size_t batchLaneCount() const { return m_batched ? m_batchLanes.size() : 0; }
     /// Starts the velocity passes: packs the constraints for them (unless prepare() has put them
     /// in batches) and applies last step's contact-force impulses (warm starting).
