@@ -805,6 +805,10 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     m_contactSolver.finishVelocities(m_bodies);
     if (guardEnergy)
         holdContactEnergy(kineticBefore, h);
+    // Small jointed islands of very unlike masses, which the passes cannot settle, solved whole
+    // (not where soft bodies are: their joints act on the grids' aggregates).
+    m_unlikeMasses.solveVelocities(m_bodies, m_jointSolver, m_contactSolver, h, world.softBodies.empty());
+    m_profile.unlikeMassIslands += m_unlikeMasses.solvedVelocityIslands();
     // A light body held by a fixed one against a far heavier one props it up (a pebble under a
     // tonne): the passes cannot stop the heavy body through it, this does.
     m_contactSolver.findProps(m_bodies);
@@ -835,6 +839,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         if (jointsOk && contactsOk)
             break;
     }
+    m_unlikeMasses.solvePositions(m_bodies, m_jointSolver, m_contactSolver);
     m_contactSolver.solvePropPositions(m_bodies);
     // Moving bodies while their velocities stay changes the angular momentum; each pushed pair
     // takes it back by turning its relative velocity (docs/physics.md, "Conservation"). Only
@@ -848,8 +853,10 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         onSoftAggregates([&] {
             m_contactSolver.measurePushes(m_bodies);
             m_jointSolver.measurePushes(m_bodies);
+            m_unlikeMasses.measurePushes(m_bodies);
             m_contactSolver.takeBackPushes(m_bodies);
             m_jointSolver.takeBackPushes(m_bodies);
+            m_unlikeMasses.takeBackPushes(m_bodies);
         });
         // What is left is the smooth forces' timing (a spring's pull taken by each end from its
         // own last impact): each island nothing outside touches keeps its angular momentum.

@@ -9,6 +9,7 @@
 #include "controller/dynamics/island_spin.h"
 #include "controller/integration/integrator.h"
 #include "controller/dynamics/joint_solver.h"
+#include "controller/dynamics/unlike_masses.h"
 #include "controller/soft/soft_damping.h"
 #include "controller/soft/soft_stability.h"
 #include "controller/task_pair.h"
@@ -42,6 +43,9 @@ struct StepProfile {
     int batchLanes = 0;
     int impacts = 0; ///< impacts resolved
     int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
+    /// Islands of unlike masses whose velocities were solved whole (UnlikeMassIslands), summed
+    /// over the substeps.
+    int unlikeMassIslands = 0;
     /// Collision passes (broad and narrow phase) the step ran: one for a rigid world at rest or
     /// nearly however many substeps it takes; one per substep where bodies move fast or with soft
     /// bodies (Simulation::step).
@@ -241,6 +245,7 @@ private:
     BroadPhase m_broadPhase;
     ContactSolver m_contactSolver;
     JointSolver m_jointSolver;
+    UnlikeMassIslands m_unlikeMasses;
     IslandSpin m_islandSpin; ///< closed islands' angular momentum in zero gravity (island_spin.h)
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;

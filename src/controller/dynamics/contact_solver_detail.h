@@ -67,25 +67,45 @@ struct PositionCorrection {
     Vec2 rB = Vec2::Zero();
     Vec2 impulse = Vec2::Zero(); ///< m·kg, +P on B and −P on A
 };
+/// Where point p of c is at the bodies' poses (each one's (cos, sin)): the normal, which turns
+/// with A, the surface points' separation along it, and the lever arms of the point half-way
+/// between them.
+struct ContactGeometry {
+    Vec2 normal = Vec2::Zero();
+    Scalar separation = 0; ///< m
+    Vec2 rA = Vec2::Zero();
+    Vec2 rB = Vec2::Zero();
+};
+inline ContactGeometry contactGeometry(const ContactConstraint& c, const ContactConstraintPoint& p, const SolverBody& a,
+                                       const SolverBody& b, const Vec2& rotationA, const Vec2& rotationB)
+{
+    const Transform frameA{a.position, rotationA.x(), rotationA.y()};
+    const Transform frameB{b.position, rotationB.x(), rotationB.y()};
+    ContactGeometry out;
+    out.normal = frameA.rotate(c.localNormalA);
+    const Vec2 pointA = frameA.apply(p.localAnchorA);
+    const Vec2 pointB = frameB.apply(p.localAnchorB);
+    out.separation = (pointB - pointA).dot(out.normal);
+    const Vec2 mid = 0.5 * (pointA + pointB);
+    out.rA = mid - a.position;
+    out.rB = mid - b.position;
+    return out;
+}
+
 inline PositionCorrection positionCorrection(const ContactConstraint& c, const ContactConstraintPoint& p,
                                              const SolverBody& a, const SolverBody& b, const Vec2& rotationA,
                                              const Vec2& rotationB)
 {
     PositionCorrection out;
-    const Transform frameA{a.position, rotationA.x(), rotationA.y()};
-    const Transform frameB{b.position, rotationB.x(), rotationB.y()};
-    const Vec2 n = frameA.rotate(c.localNormalA);
-    const Vec2 pointA = frameA.apply(p.localAnchorA);
-    const Vec2 pointB = frameB.apply(p.localAnchorB);
-    out.separation = (pointB - pointA).dot(n);
+    const ContactGeometry look = contactGeometry(c, p, a, b, rotationA, rotationB);
+    out.separation = look.separation;
     const Scalar correction = std::clamp(constants::kPositionCorrectionFactor * (out.separation + constants::kLinearSlop),
                                          -constants::kMaxPositionCorrection, 0.0);
     if (correction == 0)
         return out;
-    const Vec2 mid = 0.5 * (pointA + pointB);
-    out.rA = mid - a.position;
-    out.rB = mid - b.position;
-    out.impulse = (-correction * effectiveMass(a, b, out.rA, out.rB, n)) * n;
+    out.rA = look.rA;
+    out.rB = look.rB;
+    out.impulse = (-correction * effectiveMass(a, b, out.rA, out.rB, look.normal)) * look.normal;
     return out;
 }
 

@@ -52,6 +52,10 @@ private:
     std::vector<Vec2> m_islandMoment;
     std::vector<Scalar> m_lost;
     std::vector<Scalar> m_islandInertia;
+    /// Per root: the angular momentum about the centre of mass at the end, and ½Σ(m·v² + I·ω²).
+    std::vector<Scalar> m_islandSpin;
+    std::vector<Scalar> m_islandKinetic;
+    std::vector<Scalar> m_turn; ///< per root: δω, rad/s
 };
 
 } // namespace impetus::controller

@@ -27,13 +27,6 @@ namespace {
 /// The soak has not been measured without it since.
 constexpr Scalar kMinStruckShare = 0.5;
 
-/// How much of the step a body's end velocity moves it for, as its joints see it: all of it, or
-/// after a struck body's last impact the rest of the step, at least kMinStruckShare.
-Scalar velocityShare(const SolverBody& body)
-{
-    return body.hadImpact ? std::max(kMinStruckShare, 1 - body.lastImpactTau) : 1;
-}
-
 /// K for a point constraint between material points rA, rB (the 2×2 effective-mass matrix), each
 /// body's part weighted by how much of its velocity moves it (shareA, shareB; 1 for the position
 /// passes).
@@ -398,6 +391,73 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
             c.impulse.x() += lambda;
             applyJointImpulse(a, b, c.rA, c.rB, lambda * c.axis);
         }
+    }
+}
+
+Scalar velocityShare(const SolverBody& body)
+{
+    return body.hadImpact ? std::max(kMinStruckShare, 1 - body.lastImpactTau) : 1;
+}
+
+void JointSolver::appendRows(std::span<const SolverBody> bodies, Scalar h, std::vector<ConstraintRow>& rows) const
+{
+    for (const Constraint& c : m_joints) {
+        ConstraintRow row;
+        row.bodyA = c.bodyA;
+        row.bodyB = c.bodyB == kWorld ? ConstraintRow::kNoBody : c.bodyB;
+        row.rA = c.rA;
+        row.rB = c.rB;
+        row.shareA = c.shareA;
+        row.shareB = c.shareB;
+        if (c.type == model::JointType::Pin) {
+            for (int axis = 0; axis < 2; ++axis) {
+                row.direction = axis == 0 ? Vec2(1, 0) : Vec2(0, 1);
+                row.offset = c.arc[axis];
+                rows.push_back(row);
+            }
+            continue;
+        }
+        // The rod's pass drives the end condition's error over h to zero (solveVelocities), or
+        // where that condition has turned over, the velocity along the rod.
+        row.direction = c.axis;
+        row.offset = 0;
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
+        const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
+                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA)) + c.arc;
+        const Vec2 predicted = c.separation + h * dv;
+        const Scalar error = predicted.norm() - c.heldLength;
+        const Scalar wanted = 2 * predicted.dot(c.axis) > error && h > 0 ? error / h : c.axis.dot(dv);
+        row.offset = wanted - c.axis.dot(dv - c.arc);
+        rows.push_back(row);
+    }
+}
+
+void JointSolver::appendPositionRows(std::span<const SolverBody> bodies, std::vector<ConstraintRow>& rows) const
+{
+    for (const Constraint& c : m_joints) {
+        const SolverBody& a = bodies[c.bodyA];
+        const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
+        ConstraintRow row;
+        row.bodyA = c.bodyA;
+        row.bodyB = c.bodyB == kWorld ? ConstraintRow::kNoBody : c.bodyB;
+        row.rA = rotate(c.localA, a.angle);
+        row.rB = rotate(c.localB, b.angle);
+        const Vec2 d = b.position + row.rB - a.position - row.rA;
+        if (c.type == model::JointType::Pin) {
+            for (int axis = 0; axis < 2; ++axis) {
+                row.direction = axis == 0 ? Vec2(1, 0) : Vec2(0, 1);
+                row.offset = d[axis];
+                rows.push_back(row);
+            }
+            continue;
+        }
+        const Scalar distance = d.norm();
+        if (!(distance > 0))
+            continue;
+        row.direction = d / distance;
+        row.offset = distance - c.length;
+        rows.push_back(row);
     }
 }
 

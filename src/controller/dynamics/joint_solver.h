@@ -9,6 +9,7 @@
 /// A joint to the world (bodyB absent) uses a fixed point for B.
 
 #include "controller/dynamics/contact_solver.h"
+#include "controller/dynamics/unlike_masses.h"
 #include "model/world.h"
 
 #include <Eigen/Core>
@@ -19,6 +20,11 @@
 #include <vector>
 
 namespace impetus::controller {
+
+/// How much of the step a body's end velocity moves it for, as its joints see it: all of it, or
+/// after a struck body's last impact the rest of the step, at least kMinStruckShare
+/// (joint_solver.cpp says why).
+Scalar velocityShare(const SolverBody& body);
 
 class JointSolver {
 public:
@@ -43,6 +49,14 @@ public:
     /// are left alone.
     void measurePushes(std::span<const SolverBody> bodies);
     void takeBackPushes(std::span<SolverBody> bodies) const;
+
+    /// Each joint's velocity constraints as rows (one for a rod, two for a pin), as the passes
+    /// see them now: a row's value is what the pass would drive to zero, the rod's non-linear end
+    /// condition taken to first order about the present velocities. For UnlikeMassIslands.
+    void appendRows(std::span<const SolverBody> bodies, Scalar h, std::vector<ConstraintRow>& rows) const;
+    /// The same for the position passes at the bodies' present poses: a row's offset is the
+    /// joint's error along it (m), its lever arms the anchors'. Shares are 1.
+    void appendPositionRows(std::span<const SolverBody> bodies, std::vector<ConstraintRow>& rows) const;
 
     /// Copies the accumulated impulses back into the world's joints (for warm starting).
     void storeImpulses(model::World& world) const;
