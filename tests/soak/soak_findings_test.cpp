@@ -124,10 +124,17 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("
 // on two rods to a circle, through the floor at 1.7 s (explicit Euler); 2429, a soft box of
 // 150 t/m² pinned twice to a circle pinned to a 373 kg one, the energy 39 % up in the first step
 // of 1/60 s (RK4, drag); 2468, a soft polygon pinned to the world and a circle on a rod and a pin
-// to it, 87 % up in 0.9 s (RK4, sideways gravity).
+// to it, 87 % up in 0.9 s (RK4, sideways gravity). From seeds 2801–3400: 2822, a 1 g polygon
+// pinned to a light ellipse pinned to a 3 g circle, beside a soft box, through the floor at 2.1 s
+// (RK4); 2833, a 413 kg ellipse on a rod to a polygon of 11 t/m² at 52 m/s, spinning at 200 rad/s
+// against the right wall, out in 11 steps (explicit Euler; the masses under ten times apart);
+// 2840, a soft ellipse pinned twice to a 1.9 t polygon at 83 m/s, an ellipse through the floor at
+// 0.23 s (semi-implicit Euler); 2932, a soft polygon on a rod to a polygon of 24 t/m² and on a
+// spring of 68 kN/m to a circle, an ellipse through the left wall at 0.72 s (explicit Euler,
+// zero gravity, 1/60 s).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindingsBeyond200, SoakFinding,
                          ::testing::Values("331", "417", "520", "1210", "1352", "1489", "2026", "2087", "2146",
-                                           "2323", "2429", "2468"),
+                                           "2323", "2429", "2468", "2822", "2833", "2840", "2932"),
                          seedName);
 
 } // namespace
