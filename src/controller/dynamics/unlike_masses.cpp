@@ -171,18 +171,6 @@ bool UnlikeMassIslands::moves(std::span<const SolverBody> bodies, std::uint32_t 
 void UnlikeMassIslands::findIslands(std::span<const SolverBody> bodies, const ContactSolver& contacts)
 {
     m_islands.clear();
-    // Most jointed worlds (a chain, a mesh of equal links) have no masses ten times apart at all:
-    // one look at the masses, and nothing more.
-    Scalar lightestInverse = 0;
-    Scalar heaviestInverse = std::numeric_limits<Scalar>::infinity();
-    for (const SolverBody& body : bodies) {
-        if (body.invMass > 0) {
-            lightestInverse = std::max(lightestInverse, body.invMass);
-            heaviestInverse = std::min(heaviestInverse, body.invMass);
-        }
-    }
-    if (!(lightestInverse > kMassRatio * heaviestInverse))
-        return;
     m_parent.resize(bodies.size());
     std::iota(m_parent.begin(), m_parent.end(), 0U);
     const auto join = [&](std::uint32_t a, std::uint32_t b) {
@@ -290,6 +278,18 @@ void UnlikeMassIslands::solveVelocities(std::span<SolverBody> bodies, const Join
     m_solvedVelocities = 0;
     m_islands.clear();
     if (!enabled || joints.empty())
+        return;
+    // Most jointed worlds (a chain, a mesh of equal links) have no masses ten times apart at all:
+    // one look at the masses, and nothing more.
+    Scalar lightestInverse = 0;
+    Scalar heaviestInverse = std::numeric_limits<Scalar>::infinity();
+    for (const SolverBody& body : bodies) {
+        if (body.invMass > 0) {
+            lightestInverse = std::max(lightestInverse, body.invMass);
+            heaviestInverse = std::min(heaviestInverse, body.invMass);
+        }
+    }
+    if (!(lightestInverse > kMassRatio * heaviestInverse))
         return;
     m_jointRows.clear();
     joints.appendRows(bodies, h, m_jointRows);
@@ -452,7 +452,6 @@ void UnlikeMassIslands::solvePositions(std::span<SolverBody> bodies, const Joint
                 bodies[saved.index].angle = saved.angle;
             }
             m_pushes.resize(firstPush);
-            continue;
         }
     }
 }
