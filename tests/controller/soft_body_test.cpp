@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace impetus {
 namespace {
@@ -820,6 +821,57 @@ TEST(SoftBody, PinnedToATurningRigidBoxKeepsMomentumAndGainsNoEnergy)
         ASSERT_LT(controller::computeEnergy(world).total(), energy * (1 + 1e-3)) << "step " << i;
     }
     EXPECT_GT(std::abs(world.bodies[1].state.angularVelocity), 1.0); // rad/s: the pair turns
+}
+
+TEST(SoftBody, SmallerThanACellItIsTwoEllipsesAndItsJointsHold)
+{
+    // A soft box of 0.025 m² at 4 ellipses per m² would be one ellipse: a point, with no angle
+    // to fit and no moment of inertia. Turned by 1.8 rad and pinned 2.2 m from its centre to a
+    // rigid ball, its angle was taken as 0 and the pin's anchor on it swung 2 m away in the first
+    // step; the position passes dragged the ball after it (soak seed 2429 gained 40 % of its
+    // energy in a step), and without gravity the locked orientation fed the angular-momentum
+    // keepers until the energy had grown 2.6-fold. Two ellipses turn with the pair as a rigid
+    // body would.
+    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
+    model::Body small = soft(makeBox("speck", 1000, 0.25, 0.1, Vec2(2, 3)), 4);
+    small.state.angle = 1.8;
+    world.bodies.push_back(small);
+    world.bodies.push_back(makeBall("ball", 100, 0.4, Vec2(0, 7)));
+    world.bodies[1].state.velocity = Vec2(1, 0.5);
+    world.joints.push_back(pinAt(world, model::BodyId{0}, model::BodyId{1}, Vec2(1, 5)));
+    controller::prepareSoftBodies(world);
+    ASSERT_EQ(world.softBodies[0].size(), 2u);
+    EXPECT_EQ(world.softBodies[0].columns, 2); // along the longer side
+    controller::Simulation simulation(controller::settingsUnderTest());
+    simulation.step(world);
+    // The first step takes out the ball's velocity along the pin's arm, as for a rigid speck.
+    const Scalar energy = controller::computeEnergy(world).total();
+    const model::Joint& pin = world.joints[0];
+    for (int i = 0; i < 2400; ++i) {
+        simulation.step(world);
+        const Vec2 a = world.bodies[0].worldPoint(pin.anchorA);
+        const Vec2 b = world.bodies[1].worldPoint(pin.anchorB);
+        ASSERT_LT((a - b).norm(), 1e-3) << "step " << i; // m
+        ASSERT_LT(controller::computeEnergy(world).total(), energy * (1 + 1e-3)) << "step " << i;
+    }
+    // The pair turns about its centre of mass: the speck turns with it.
+    EXPECT_GT(std::abs(world.bodies[0].state.angle - 1.8), 0.1); // rad
+}
+
+TEST(SoftGrid, AGridOfOneEllipseKeepsTheAngleItHad)
+{
+    // A grid can still be one ellipse where neither of its two cells' centres lies in the shape
+    // (a sliver): with no lattice to fit, its aggregate keeps the reference angle, not atan2(0, 0).
+    model::SoftGrid grid;
+    grid.restPositions = {Vec2::Zero()};
+    grid.ellipseMass = 2;
+    const std::vector<Vec2> positions{Vec2(3, 4)};
+    const std::vector<Vec2> velocities{Vec2(1, 0)};
+    const controller::SoftAggregate a = controller::softAggregate(grid, positions, velocities, 1.8);
+    EXPECT_EQ(a.angle, 1.8);
+    EXPECT_EQ(a.position, Vec2(3, 4));
+    EXPECT_EQ(a.angularVelocity, 0);
+    EXPECT_EQ(a.inertia, 0);
 }
 
 } // namespace

@@ -187,6 +187,11 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
     const Scalar perMetre = std::sqrt(ellipsesPerSquareMeter);
     grid.columns = std::max(1, static_cast<int>(std::lround(size.x() * perMetre)));
     grid.rows = std::max(1, static_cast<int>(std::lround(size.y() * perMetre)));
+    // At least two cells, along the longer side: one ellipse is a point, with no orientation and
+    // no moment of inertia, so a joint or spring anchored off its centre could not turn it (a pin
+    // 2 m from such a body's centre tore the two bodies apart: soak seed 2429).
+    if (grid.columns == 1 && grid.rows == 1)
+        (size.x() >= size.y() ? grid.columns : grid.rows) = 2;
     grid.cellSize = Vec2(size.x() / grid.columns, size.y() / grid.rows);
     grid.latticeOrigin = lower;
     grid.cellEllipse.assign(static_cast<std::size_t>(grid.columns * grid.rows), -1);
@@ -291,9 +296,18 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
         spin += cross(p, Vec2(velocities[i] - a.velocity));
         inertia += p.squaredNorm();
     }
-    const Scalar angle = std::atan2(crossSum, dot);
-    const Scalar turn = 2 * std::numbers::pi;
-    a.angle = angle + turn * std::round((referenceAngle - angle) / turn);
+    // A grid of one ellipse has no rest lattice to fit: it keeps the
+    // angle it had, so that a joint's anchor on it stays where it was (taken as 0, atan2(0, 0),
+    // it swung a pin's anchor on such a body round its centre and the joint tore the bodies
+    // apart: soak seed 2429; the builder now makes two cells at least, but a sliver of a shape
+    // can still hold one). Its ellipse cannot spin, so its inertia is 0 and it never turns.
+    if (dot == 0 && crossSum == 0) {
+        a.angle = referenceAngle;
+    } else {
+        const Scalar angle = std::atan2(crossSum, dot);
+        const Scalar turn = 2 * std::numbers::pi;
+        a.angle = angle + turn * std::round((referenceAngle - angle) / turn);
+    }
     a.angularVelocity = inertia > 0 ? spin / inertia : 0;
     a.inertia = grid.ellipseMass * inertia;
     return a;

@@ -50,6 +50,7 @@ struct SoftAggregate {
 /// The aggregate of a grid whose ellipses are at `positions` with `velocities`. The best-fit angle
 /// θ maximises Σ (x − c)·R(θ)·r (r the rest positions): θ = atan2(Σ r × p, Σ r · p), taken in the
 /// turn nearest `referenceAngle` so that a spinning body's angle keeps counting.
+/// A grid of one ellipse keeps `referenceAngle`.
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
                             std::span<const Vec2> velocities, Scalar referenceAngle);
 
