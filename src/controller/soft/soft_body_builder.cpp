@@ -296,11 +296,11 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
         spin += cross(p, Vec2(velocities[i] - a.velocity));
         inertia += p.squaredNorm();
     }
-    // A grid of one ellipse has no rest lattice to fit: it keeps the
-    // angle it had, so that a joint's anchor on it stays where it was (taken as 0, atan2(0, 0),
-    // it swung a pin's anchor on such a body round its centre and the joint tore the bodies
-    // apart: soak seed 2429; the builder now makes two cells at least, but a sliver of a shape
-    // can still hold one). Its ellipse cannot spin, so its inertia is 0 and it never turns.
+    // A grid of one ellipse has no rest lattice to fit: it keeps the angle it had, so that a
+    // joint's anchor on it stays where it was (taken as 0, atan2(0, 0), it swung a pin's anchor
+    // on such a body round its centre and the joint tore the bodies apart: soak seeds 2429 and
+    // 3419; the builder now makes two cells at least, but a sliver of a shape can still hold
+    // one). Its ellipse cannot spin, so its inertia is 0 and it never turns.
     if (dot == 0 && crossSum == 0) {
         a.angle = referenceAngle;
     } else {
