@@ -64,7 +64,8 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
 }
 
 /// The largest turn in a step for which a joint's end condition follows its anchor on its arc
-/// (JointSolver::prepare), rad: an eighth of a turn, as spinSubsteps allows all but circles.
+/// (JointSolver::prepare), rad: an eighth of a turn, as spinSubsteps allows every pinned body and
+/// every other body but a circle.
 constexpr Scalar kMaxArcTurn = std::numbers::pi / 4;
 
 /// How much faster than its arcs a block's bodies may be set moving by them (JointSolver::
@@ -252,8 +253,8 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         // of its swing energy a second, whatever the step. Between two bodies the arcs are not
         // taken: there they fed soak seed 145 (a pin and a rod between a 3 t circle and a 2 t
         // ellipse, its energy 100 times its start in 1.4 s), and with each pass's own turn (a
-        // Newton step) seed 23. A body turning more than kMaxArcTurn in the step (a circle, which
-        // spinSubsteps leaves alone) keeps the tangent.
+        // Newton step) seed 23. A body turning more than kMaxArcTurn in the step (a circle on a
+        // rod, whose own spin spinSubsteps leaves alone) keeps the tangent.
         const auto arc = [&](const SolverBody& body, const Vec2& r, Scalar share) {
             const Scalar turn = share * h * body.angularVelocity;
             if (!(std::abs(turn) <= kMaxArcTurn) || !(h > 0))
