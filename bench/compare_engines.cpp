@@ -70,6 +70,10 @@ constexpr double kQuickTimeLimit = 10;
 /// work. Set on the child process (RLIMIT_AS).
 constexpr rlim_t kMemoryLimit = rlim_t{8} << 30;
 
+/// How often a run's deepest overlap is looked at, in simulated time (s): every frame of a 60 Hz
+/// display, so that what a viewer could see is counted, and at the same times for every engine.
+constexpr Scalar kOverlapSampleTime = 1.0 / 60;
+
 /// The seed of the polygon rain: any fixed value, so every run rains the same polygons.
 constexpr unsigned kRainSeed = 1;
 
@@ -347,6 +351,9 @@ struct Run {
     int plannedSteps = 0; ///< the steps that make up the scene's simulated time
     std::vector<double> stepMs; ///< wall-clock time of each step done, ms
     std::vector<Pose> poses; ///< at the end; empty when the run did not finish
+    /// The deepest overlap of any two bodies over the run, looked at every kOverlapSampleTime of
+    /// simulated time (m); empty when the scene's shapes cannot be measured (an ellipse).
+    std::optional<Scalar> peakOverlap;
     std::optional<controller::StepProfile> impetusProfile; ///< Impetus only: summed over the steps done
     std::optional<Box2dV3Profile> v3Profile; ///< Box2D v3 only: summed over the steps done
     std::string failure; ///< why the engine could not take the scene; empty when it ran
@@ -378,6 +385,8 @@ std::string displayName(const std::string& name)
 struct SharedRun {
     int stepsDone = 0;
     bool finished = false; ///< every step done and the poses written
+    bool overlapMeasured = false; ///< peakOverlap holds: the shapes can be measured
+    Scalar peakOverlap = 0; ///< m, over the steps done (Run::peakOverlap)
     bool hasImpetusProfile = false;
     controller::StepProfile impetusProfile; ///< summed over the steps done
     bool hasV3Profile = false;
@@ -439,10 +448,18 @@ void runInChild(const std::string& name, const Scene& scene, Scalar timeStep, in
     out.hasImpetusProfile = impetus != nullptr;
     out.hasV3Profile = v3 != nullptr;
     double* stepMs = shared.stepMs();
+    // The overlap is looked at between the timed calls, at the same simulated times whatever the
+    // engine's step, so that a short step is not looked at more often.
+    const int sampleEvery = std::max(1, static_cast<int>(std::lround(kOverlapSampleTime / timeStep)));
+    out.overlapMeasured = std::none_of(scene.world.bodies.begin(), scene.world.bodies.end(), [](const model::Body& body) {
+        return std::holds_alternative<model::Ellipse>(body.shape);
+    });
     for (int i = 0; i < steps; ++i) {
         const Clock::time_point start = Clock::now();
         engine->step();
         stepMs[i] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (out.overlapMeasured && ((i + 1) % sampleEvery == 0 || i + 1 == steps))
+            out.peakOverlap = std::max(out.peakOverlap, deepestOverlap(scene.world, engine->poses()).depth);
         if (impetus)
             out.impetusProfile = impetus->profileSum();
         if (v3)
@@ -523,6 +540,8 @@ Run runEngine(const std::string& name, const Scene& scene, Scalar timeStep,
     // A child that finished just as the time ran out was not stopped.
     run.stopped = run.stopped && !result.finished;
     run.stepMs.assign(shared.stepMs(), shared.stepMs() + result.stepsDone);
+    if (result.overlapMeasured && result.stepsDone > 0)
+        run.peakOverlap = result.peakOverlap;
     if (result.hasImpetusProfile && result.stepsDone > 0)
         run.impetusProfile = result.impetusProfile;
     if (result.hasV3Profile && result.stepsDone > 0)
@@ -658,10 +677,10 @@ void printTable(const Scene& scene, const std::vector<const Run*>& rows)
             v3Cost = msPerSimulatedSecond(*r);
     }
     std::cout << "| engine    | step | steps | ms/step mean | ms/step median | slowest ÷ median | ms per simulated s | x Impetus | x v3 |"
-              << (pyramids ? " top drift (m) | top drop (m) |" : "") << " deepest overlap (m) |"
+              << (pyramids ? " top drift (m) | top drop (m) |" : "") << " deepest overlap, end (m) | deepest overlap, run (m) |"
               << (joints ? " worst joint gap (m) |" : "") << "\n"
               << "|-----------|------|------:|-------------:|---------------:|-----------------:|-------------------:|----------:|-----:|"
-              << (pyramids ? "--------------:|-------------:|" : "") << "--------------------:|"
+              << (pyramids ? "--------------:|-------------:|" : "") << "-------------------------:|-------------------------:|"
               << (joints ? "--------------------:|" : "") << "\n";
     const std::string noValue = "-";
     for (const Run* r : rows) {
@@ -694,7 +713,8 @@ void printTable(const Scene& scene, const std::vector<const Run*>& rows)
             std::cout << ' ' << (finished ? fixed(motion.drift, 4) : noValue) << " | "
                       << (finished ? fixed(motion.drop, 4) : noValue) << " |";
         }
-        std::cout << ' ' << (finished ? fixed(deepestOverlap(scene.world, r->poses).depth, 4) : noValue) << " |";
+        std::cout << ' ' << (finished ? fixed(deepestOverlap(scene.world, r->poses).depth, 4) : noValue) << " | "
+                  << (finished && r->peakOverlap ? fixed(*r->peakOverlap, 4) : noValue) << " |";
         if (joints)
             std::cout << ' ' << (finished ? fixed(worstJointError(scene.world, r->poses), 4) : noValue) << " |";
         std::cout << "\n";
