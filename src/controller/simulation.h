@@ -80,6 +80,8 @@ int dragSubsteps(const model::World& world, Scalar h);
 /// The equal substeps a step of h seconds needs so that no body other than a circle or a soft
 /// body turns by more than an eighth of a turn within one: ⌈|ω|·h / (π/4)⌉ for the fastest
 /// spinning one, fixed bodies included; 1 for slower spins, at most constants::kMaxSolverSubsteps.
+/// In a world whose dynamic bodies' masses lie more than UnlikeMassIslands::kMassRatio apart,
+/// 0.1 rad instead of π/4 (a light body driven against a wall by a heavy one).
 /// A pinned body counts whatever its shape, and a rod whose ends go round each other at Ω counts
 /// as ⌈Ω·h / 0.2⌉, the turn at which the rod's pass keeps the energy to about 1 %.
 int spinSubsteps(const model::World& world, Scalar h);

@@ -151,6 +151,30 @@ TEST(SolverSubsteps, FastSpinsSplitStepsWithContactsToAnEighthOfATurn)
     EXPECT_EQ(simulation.profile().substeps, 3);
 }
 
+// Where masses lie more than ten times apart, a step is split until no body but a circle turns by
+// more than 0.1 rad in a substep: a light body that a heavy one drives against a wall meets its
+// contact rows, linear in its spin, by spinning (soak seed 4386: a 54 g ellipse at 148 rad/s on a
+// rod to a 0.59 kg one went through the ceiling at 0.6 rad a substep). The same spins in a world
+// of like masses split at an eighth of a turn.
+TEST(SolverSubsteps, FastSpinsAmongUnlikeMassesSplitStepsToATenthOfARadian)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2::Zero());
+    world.bodies.push_back(makeBox("box", 1.0, 0.5, 0.1, Vec2(0, 5)));
+    world.bodies.push_back(makeBall("ball", 1.0, 0.1, Vec2(50, 5)));
+    const Scalar rate = 0.23 * 240; // rad/s: 0.23 rad a step of 1/240 s, 0.92 rad a step of 1/60 s
+    world.bodies[0].state.angularVelocity = rate;
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1); // like masses: an eighth of a turn, 0.785 rad
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 2);
+    world.bodies[1] = makeBall("ball", 10.5, 0.1, Vec2(50, 5)); // 10.5 times the box
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 3);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 10);
+    world.bodies[1] = makeBall("ball", 9.5, 0.1, Vec2(50, 5)); // within ten times
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
+    // A fixed body's mass does not count: a light box beside a heavy wall is not unlike anything.
+    world.bodies[1] = makeGround("wall", 10, 10, Vec2(50, 5));
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
+}
+
 // A world in free flight integrates over the step the user chose (an integrator lesson sees its
 // error at that step); the same world with a contact to solve is split.
 TEST(SolverSubsteps, OnlyStepsWithContactsOrJointsAreSplit)

@@ -65,7 +65,7 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
 
 /// The largest turn in a step for which a joint's end condition follows its anchor on its arc
 /// (JointSolver::prepare), rad: an eighth of a turn, as spinSubsteps allows every pinned body and
-/// every other body but a circle.
+/// every other body but a circle (0.1 rad in a world of unlike masses).
 constexpr Scalar kMaxArcTurn = std::numbers::pi / 4;
 
 /// How much faster than its arcs a block's bodies may be set moving by them (JointSolver::
