@@ -325,9 +325,9 @@ TEST(Joints, CloseAnOpenJointWithoutSettingTheBodiesMoving)
 // thousands of m/s). The rod must hold the ball and keep its energy, which nothing else acts on.
 // A pass that held the velocity along the rod at zero once the end condition had turned over
 // never added energy but took it out, turn by turn (the ball fell to a fifth of its energy); the
-// step is now split until the rod turns 0.2 rad at most a substep (spinSubsteps, 13 substeps
-// here), where the end condition's pass keeps the energy to (θ/2)², under 1 %, both ways, and the
-// ball goes round at its speed.
+// step is now split until the rod turns 0.1 rad at most a substep (spinSubsteps, 25 substeps
+// here), where the end condition's pass keeps the energy to (θ/2)², well under 1 %, both ways, and
+// the ball goes round at its speed.
 TEST(RodJoint, HoldsABallGoingRoundFasterThanAStepCanFollowWithoutAddingEnergy)
 {
     const Scalar length = 0.1;
