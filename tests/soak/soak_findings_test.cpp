@@ -177,10 +177,21 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("
 // 203 kg and a 7.8 kg polygon (RK4, 1/120 s), at 5.0 s; 4961, a 1.8 t soft polygon pinned to a
 // 480 kg circle at 50 m/s, with springs of 413 and 6.7 kN/m beside the pin (semi-implicit Euler,
 // zero gravity, 1/240 s), at 0.77 s; 5292, a 106 kg ellipse at 77 m/s on a rod to the world, beside
-// a 1 g soft circle on soft springs (RK4, 1/60 s), at 3.9 s.
+// a 1 g soft circle on soft springs (RK4, 1/60 s), at 3.9 s. From seeds 5491-6457, three more soft
+// bodies joined by joints to other bodies: 6097, a 1.2 t soft ellipse on a rod and a pin to a 33 kg
+// polygon and on a rod to an 863 kg one, its energy ten times its start's at 0.23 s (semi-implicit
+// Euler, 1/240 s); 6118, a 1 t soft body on two pins and a rod to a 3.4 t polygon, an ellipse
+// through the ceiling at 0.04 s (semi-implicit Euler, zero gravity, 1/240 s); 6257, a 0.86 kg soft
+// body on a rod to a 76 kg polygon at 68 m/s and pinned to a 0.53 kg body, which leaves by the left
+// wall at 0.44 s (RK4, drag, zero gravity, 1/240 s). And 6327, a 43 g box welded by a pin and two
+// rods to a 3.4 kg circle on a spring to the world, out through the ceiling at 2.35 s (explicit
+// Euler, 1/240 s). From seeds 7033 on, with 0.1 rad splits for spins among unlike masses and for
+// rods: 7042, a 42 g box on a pin and a rod to a 1.1 kg polygon pinned to a 12 kg ellipse at 98
+// m/s, beside a 3.4 t soft box at 81 m/s, through the floor at 0.125 s (semi-implicit Euler, 1/240
+// s; the islands of unlike masses leave worlds with soft bodies to the passes).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindingsBeyond200, SoakFinding,
                          ::testing::Values("1210", "2087", "2146", "3446", "3785", "4062", "4458", "4870", "4961",
-                                           "5292"),
+                                           "5292", "6097", "6118", "6257", "6327", "7042"),
                          seedName);
 
 } // namespace
