@@ -120,20 +120,16 @@ int spinSubsteps(const model::World& world, Scalar h)
     // far as kMaxSolverSubsteps allow. Box2D caps the spin itself at that turn instead; here the
     // body keeps its spin and its kinetic energy. A world of unlike masses is split further
     // (kMaxUnlikeMassTurnPerSubstep).
+    Scalar fastest = 0;
     Scalar lightest = std::numeric_limits<Scalar>::infinity();
     Scalar heaviest = 0;
     for (const model::Body& body : world.bodies) {
+        if (!body.soft && !std::holds_alternative<model::Circle>(body.shape))
+            fastest = std::max(fastest, std::abs(body.state.angularVelocity));
         if (!body.fixed && body.mass > 0) {
             lightest = std::min(lightest, body.mass);
             heaviest = std::max(heaviest, body.mass);
         }
-    }
-    const Scalar mostTurn =
-        heaviest > UnlikeMassIslands::kMassRatio * lightest ? kMaxUnlikeMassTurnPerSubstep : kMaxTurnPerSubstep;
-    Scalar fastest = 0;
-    for (const model::Body& body : world.bodies) {
-        if (!body.soft && !std::holds_alternative<model::Circle>(body.shape))
-            fastest = std::max(fastest, std::abs(body.state.angularVelocity));
     }
     // A joint's rows are built at the start of a substep too: a rod along its direction then, a
     // pin at its arms then. A pinned body of any shape that turns by more than kMaxTurnPerSubstep
@@ -159,6 +155,8 @@ int spinSubsteps(const model::World& world, Scalar h)
         const Vec2 relative = (b ? b->velocityAt(endB) : Vec2::Zero()) - a.velocityAt(endA);
         fastestRod = std::max(fastestRod, std::abs(cross(along, relative)) / lengthSquared);
     }
+    const Scalar mostTurn =
+        heaviest > UnlikeMassIslands::kMassRatio * lightest ? kMaxUnlikeMassTurnPerSubstep : kMaxTurnPerSubstep;
     return substepsForRatio(std::max(fastest * h / mostTurn, fastestRod * h / kMaxRodTurnPerSubstep));
 }
 
