@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <variant>
 
 namespace impetus::controller {
@@ -238,6 +239,8 @@ void Simulation::setUpSolverBodies(const model::World& world)
     // A soft body's own solver body is its grid's aggregate: only joints act on it (contacts act
     // on the ellipses), and what they do is handed on to the ellipses (shareJointMotion).
     m_softAggregates.resize(world.softBodies.size());
+    m_movedBy.resize(world.softBodies.empty() ? 0 : m_bodies.size());
+    std::iota(m_movedBy.begin(), m_movedBy.end(), 0U);
     std::size_t next = n;
     for (std::size_t g = 0; g < world.softBodies.size(); ++g) {
         const model::SoftGrid& grid = world.softBodies[g];
@@ -254,6 +257,7 @@ void Simulation::setUpSolverBodies(const model::World& world)
         const Scalar invMass = 1 / grid.ellipseMass;
         for (std::size_t i = 0; i < grid.size(); ++i, ++next) {
             m_entries[next] = Entry::Ellipse;
+            m_movedBy[next] = owner;
             SolverBody& e = m_bodies[next];
             e = SolverBody{};
             e.position = grid.positions[i];
@@ -856,10 +860,11 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     m_contactSolver.finishVelocities(m_bodies);
     if (guardEnergy)
         holdContactEnergy(kineticBefore, h);
-    // Small jointed islands of very unlike masses, which the passes cannot settle, solved whole
-    // (not where soft bodies are: their joints act on the grids' aggregates).
-    m_unlikeMasses.solveVelocities(m_bodies, m_jointSolver, m_contactSolver, h, world.softBodies.empty());
+    // Small jointed islands of very unlike masses, which the passes cannot settle, solved whole;
+    // a soft body in one takes part as its grid's aggregate, as in the joint passes.
+    onSoftAggregates([&] { m_unlikeMasses.solveVelocities(m_bodies, m_jointSolver, m_contactSolver, h, m_movedBy); });
     m_profile.unlikeMassIslands += m_unlikeMasses.solvedVelocityIslands();
+    m_jointSolver.forgetImpulses(m_unlikeMasses.solvedBodies());
     // A light body held by a fixed one against a far heavier one props it up (a pebble under a
     // tonne): the passes cannot stop the heavy body through it, this does.
     m_contactSolver.findProps(m_bodies);
@@ -890,7 +895,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         if (jointsOk && contactsOk)
             break;
     }
-    m_unlikeMasses.solvePositions(m_bodies, m_jointSolver, m_contactSolver);
+    m_unlikeMasses.solvePositions(m_bodies, m_jointSolver, m_contactSolver, m_movedBy);
     m_contactSolver.solvePropPositions(m_bodies);
     // Moving bodies while their velocities stay changes the angular momentum; each pushed pair
     // takes it back by turning its relative velocity (docs/physics.md, "Conservation"). Only

@@ -221,6 +221,9 @@ private:
     std::vector<Entry> m_entries;
     /// Per soft grid: its aggregate pose and velocity as the joint solver was handed it.
     std::vector<SolverBody> m_softAggregates;
+    /// By solver body, the one that moves it in UnlikeMassIslands: a soft body's ellipse, its
+    /// grid's aggregate; any other, itself. Empty without soft bodies.
+    std::vector<std::uint32_t> m_movedBy;
     SoftStability m_stability;
     std::vector<Vec2> m_scratchPositions;
     std::vector<Vec2> m_scratchVelocities;

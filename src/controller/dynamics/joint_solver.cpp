@@ -575,6 +575,17 @@ Scalar JointSolver::solveBlockPositions(const PinBlock& block, std::span<SolverB
     return worst;
 }
 
+void JointSolver::forgetImpulses(std::span<const std::uint32_t> bodies)
+{
+    if (bodies.empty())
+        return;
+    for (Constraint& joint : m_joints) {
+        if (std::binary_search(bodies.begin(), bodies.end(), joint.bodyA) ||
+            std::binary_search(bodies.begin(), bodies.end(), joint.bodyB))
+            joint.impulse = Vec2::Zero();
+    }
+}
+
 void JointSolver::storeImpulses(model::World& world) const
 {
     for (std::size_t i = 0; i < m_joints.size(); ++i)

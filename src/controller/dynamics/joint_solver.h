@@ -60,6 +60,9 @@ public:
 
     /// Copies the accumulated impulses back into the world's joints (for warm starting).
     void storeImpulses(model::World& world) const;
+    /// Clears the accumulated impulses of the joints on any of `bodies` (sorted): what the passes
+    /// summed for bodies that UnlikeMassIslands then solved whole is not what acted on them.
+    void forgetImpulses(std::span<const std::uint32_t> bodies);
 
     bool empty() const { return m_joints.empty(); }
 

@@ -184,8 +184,9 @@ void UnlikeMassIslands::findIslands(std::span<const SolverBody> bodies, const Co
     }
     std::sort(m_jointedPairs.begin(), m_jointedPairs.end());
     for (const ContactConstraint& c : contacts.constraints())
-        join(c.bodyA, c.bodyB);
-    // The islands with a joint, and their lightest and heaviest bodies.
+        join(mover(c.bodyA), mover(c.bodyB));
+    // The islands with a joint, and their lightest and heaviest bodies (a soft body's aggregate
+    // for the soft body, not its ellipses).
     std::vector<std::uint32_t> roots;
     for (const ConstraintRow& row : m_jointRows) {
         if (moves(bodies, row.bodyA) || moves(bodies, row.bodyB))
@@ -197,19 +198,29 @@ void UnlikeMassIslands::findIslands(std::span<const SolverBody> bodies, const Co
         return;
     std::vector<Scalar> lightest(roots.size(), std::numeric_limits<Scalar>::infinity());
     std::vector<Scalar> heaviest(roots.size(), 0);
+    std::vector<bool> holdsSoft(roots.size(), false);
     for (std::uint32_t i = 0; i < bodies.size(); ++i) {
         if (!(bodies[i].invMass > 0))
             continue;
-        const auto it = std::lower_bound(roots.begin(), roots.end(), findRoot(m_parent, i));
-        if (it == roots.end() || *it != findRoot(m_parent, i))
+        const std::uint32_t root = findRoot(m_parent, mover(i));
+        const auto it = std::lower_bound(roots.begin(), roots.end(), root);
+        if (it == roots.end() || *it != root)
             continue;
         const auto k = static_cast<std::size_t>(it - roots.begin());
+        if (mover(i) != i) {
+            holdsSoft[k] = true;
+            continue;
+        }
         lightest[k] = std::min(lightest[k], 1 / bodies[i].invMass);
         heaviest[k] = std::max(heaviest[k], 1 / bodies[i].invMass);
     }
+    m_softIslands.clear();
     for (std::size_t k = 0; k < roots.size(); ++k) {
-        if (heaviest[k] > kMassRatio * lightest[k])
+        if (heaviest[k] > kMassRatio * lightest[k]) {
             m_islands.push_back(roots[k]);
+            if (holdsSoft[k])
+                m_softIslands.push_back(roots[k]);
+        }
     }
 }
 
@@ -227,34 +238,59 @@ void UnlikeMassIslands::gatherRows(std::uint32_t root, std::span<const SolverBod
             m_rows.push_back(row);
     }
     for (const ContactConstraint& c : contacts.constraints()) {
-        if (!inIsland(c.bodyA, c.bodyB) ||
+        const std::uint32_t moverA = mover(c.bodyA);
+        const std::uint32_t moverB = mover(c.bodyB);
+        if (moverA == moverB || !inIsland(moverA, moverB) ||
             std::binary_search(m_jointedPairs.begin(), m_jointedPairs.end(),
-                               std::pair(std::min(c.bodyA, c.bodyB), std::max(c.bodyA, c.bodyB))))
+                               std::pair(std::min(moverA, moverB), std::max(moverA, moverB))))
             continue;
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = bodies[c.bodyB];
         for (int p = 0; p < c.pointCount; ++p) {
             const ContactConstraintPoint& point = c.points[static_cast<std::size_t>(p)];
             ConstraintRow row;
-            row.bodyA = c.bodyA;
-            row.bodyB = c.bodyB;
+            row.bodyA = moverA;
+            row.bodyB = moverB;
             row.contact = true;
+            // The contact's points from its bodies' origins, m.
+            Vec2 pointA;
+            Vec2 pointB;
             if (positions) {
                 // Out of the overlap past the slop, as the position passes aim.
                 const detail::ContactGeometry look =
                     detail::contactGeometry(c, point, a, b, Vec2(std::cos(a.angle), std::sin(a.angle)),
                                             Vec2(std::cos(b.angle), std::sin(b.angle)));
                 row.direction = look.normal;
-                row.rA = look.rA;
-                row.rB = look.rB;
+                pointA = a.position + look.rA;
+                pointB = b.position + look.rB;
                 row.offset = look.separation + constants::kLinearSlop;
             } else {
                 row.direction = c.normal;
-                row.rA = point.rA;
-                row.rB = point.rB;
+                pointA = impulseOrigin(a) + point.rA;
+                pointB = impulseOrigin(b) + point.rB;
                 row.shareA = velocityShare(a);
                 row.shareB = velocityShare(b);
                 row.offset = h > 0 ? std::max(point.closingGap, 0.0) / h : 0;
+            }
+            // From the movers' origins (the position solve has no soft body: see solvePositions).
+            const auto origin = [&](std::uint32_t index) {
+                return positions ? bodies[index].position : impulseOrigin(bodies[index]);
+            };
+            row.rA = pointA - origin(moverA);
+            row.rB = pointB - origin(moverB);
+            if (!positions) {
+                // An ellipse's own velocity beyond its grid's rigid motion at the point, which the
+                // aggregate's change leaves as it is.
+                if (c.bodyA != moverA) {
+                    const SolverBody& grid = bodies[moverA];
+                    const Vec2 own = a.velocity - grid.velocity - cross(grid.angularVelocity, row.rA);
+                    row.offset -= row.shareA * row.direction.dot(own);
+                }
+                if (c.bodyB != moverB) {
+                    const SolverBody& grid = bodies[moverB];
+                    const Vec2 own = b.velocity - grid.velocity - cross(grid.angularVelocity, row.rB);
+                    row.offset += row.shareB * row.direction.dot(own);
+                }
             }
             m_rows.push_back(row);
         }
@@ -273,11 +309,14 @@ void UnlikeMassIslands::buildSystem(std::span<const SolverBody> bodies)
 }
 
 void UnlikeMassIslands::solveVelocities(std::span<SolverBody> bodies, const JointSolver& joints,
-                                        const ContactSolver& contacts, Scalar h, bool enabled)
+                                        const ContactSolver& contacts, Scalar h,
+                                        std::span<const std::uint32_t> movedBy)
 {
     m_solvedVelocities = 0;
+    m_solvedBodies.clear();
     m_islands.clear();
-    if (!enabled || joints.empty())
+    m_movedBy = movedBy;
+    if (joints.empty())
         return;
     // Most jointed worlds (a chain, a mesh of equal links) have no masses ten times apart at all:
     // one look at the masses, and nothing more.
@@ -371,22 +410,31 @@ void UnlikeMassIslands::solveVelocities(std::span<SolverBody> bodies, const Join
         // Not kept for the joints' warm start: handed to the passes of the next step, an
         // impulse that stopped a tonne through a light body is one they cannot take back (soak
         // seed 183's heavy circle, stopped on a light polygon, then pushed off it faster each step).
-        for (const SavedBody& saved : m_saved)
+        for (const SavedBody& saved : m_saved) {
             bodies[saved.index].hadContactForce = true;
+            m_solvedBodies.push_back(saved.index);
+        }
         ++m_solvedVelocities;
     }
     m_islands.resize(kept);
+    std::sort(m_solvedBodies.begin(), m_solvedBodies.end());
 }
 
 void UnlikeMassIslands::solvePositions(std::span<SolverBody> bodies, const JointSolver& joints,
-                                       const ContactSolver& contacts)
+                                       const ContactSolver& contacts, std::span<const std::uint32_t> movedBy)
 {
     m_pushes.clear();
+    m_movedBy = movedBy;
     if (m_islands.empty())
         return;
     m_jointRows.clear();
     joints.appendPositionRows(bodies, m_jointRows);
     for (const std::uint32_t root : m_islands) {
+        // A soft body's ellipses are taken out of their overlaps one by one by the position
+        // passes, which may bend its grid; moved as one rigid body to clear one wall, a grid
+        // squeezed into a corner went through the other (soak seed 2932).
+        if (std::binary_search(m_softIslands.begin(), m_softIslands.end(), root))
+            continue;
         const std::size_t firstPush = m_pushes.size();
         m_saved.clear();
         bool acted = false;

@@ -18,6 +18,13 @@
 ///    of its overlap past the slop, in a few linearised rounds.
 /// Contacts between two bodies a joint holds together are left out (a pin and a rod weld them,
 /// and their overlap may be what the weld holds).
+/// A soft body takes part in the velocity solve as its grid's aggregate, as it does in the joint
+/// passes: its ellipses' contacts act on the aggregate at their points, as if the grid were rigid
+/// for the solve, and the caller hands the aggregate's change on to the ellipses
+/// (Simulation::shareJointMotion). A contact's row keeps what the ellipse's own velocity adds to
+/// the grid's rigid motion there, so that the ellipse, moved by the aggregate's change, meets the
+/// row. An island with a soft body is left to the position passes (solvePositions says why).
+/// The joints of a solved island start the next step cold: their passes' sums are not what acted.
 
 #include "controller/dynamics/solver_body.h"
 #include "model/scalar.h"
@@ -70,13 +77,14 @@ class UnlikeMassIslands {
 public:
     /// After the velocity passes. Bodies joined by joints or by contacts form an island; one with
     /// a joint, bodies whose masses differ more than kMassRatio times, and at most kMaxRows rows
-    /// is solved here, and remembered for solvePositions. Nothing is when `enabled` is false (a
-    /// world with soft bodies, left to the passes: its joints act on the grids' aggregates).
+    /// is solved here, and remembered for solvePositions. `movedBy` gives, by body, the body that
+    /// moves it here: a soft body's ellipse, its grid's aggregate; empty when each moves itself.
     void solveVelocities(std::span<SolverBody> bodies, const JointSolver& joints, const ContactSolver& contacts,
-                         Scalar h, bool enabled = true);
-    /// After the position passes, the same islands, where a joint is still open or a contact
-    /// overlaps past the slop.
-    void solvePositions(std::span<SolverBody> bodies, const JointSolver& joints, const ContactSolver& contacts);
+                         Scalar h, std::span<const std::uint32_t> movedBy = {});
+    /// After the position passes, the same islands but those with a soft body, where a joint is
+    /// still open or a contact overlaps past the slop.
+    void solvePositions(std::span<SolverBody> bodies, const JointSolver& joints, const ContactSolver& contacts,
+                        std::span<const std::uint32_t> movedBy = {});
     /// What solvePositions's moves did to the angular momentum, and its take-back, as
     /// ContactSolver::measurePushes and takeBackPushes do.
     void measurePushes(std::span<const SolverBody> bodies);
@@ -84,6 +92,8 @@ public:
 
     /// Islands whose velocities the last call solved (StepProfile::unlikeMassIslands).
     int solvedVelocityIslands() const { return m_solvedVelocities; }
+    /// Their bodies, sorted.
+    std::span<const std::uint32_t> solvedBodies() const { return m_solvedBodies; }
 
     static constexpr Scalar kMassRatio = 10;
     static constexpr std::size_t kMaxRows = 96;
@@ -98,12 +108,19 @@ private:
     /// m_system from m_rows.
     void buildSystem(std::span<const SolverBody> bodies);
     bool moves(std::span<const SolverBody> bodies, std::uint32_t index) const;
+    /// The body that moves `index` in the solve (m_movedBy), or the world.
+    std::uint32_t mover(std::uint32_t index) const
+    {
+        return index < m_movedBy.size() ? m_movedBy[index] : index;
+    }
 
+    std::span<const std::uint32_t> m_movedBy; ///< the present call's
     std::vector<ConstraintRow> m_jointRows;
     std::vector<ConstraintRow> m_rows;
     Eigen::MatrixXd m_system;
     std::vector<std::uint32_t> m_parent;
     std::vector<std::uint32_t> m_islands; ///< roots of the islands solved whole
+    std::vector<std::uint32_t> m_softIslands; ///< those of them that hold a soft body, sorted
     std::vector<std::pair<std::uint32_t, std::uint32_t>> m_jointedPairs; ///< sorted, smaller index first
     struct SavedBody {
         std::uint32_t index;
@@ -122,6 +139,7 @@ private:
     };
     std::vector<Push> m_pushes;
     int m_solvedVelocities = 0;
+    std::vector<std::uint32_t> m_solvedBodies;
 };
 
 } // namespace impetus::controller
