@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("
 // 1.4 g soft circle in a box with an ellipse pinned to the world, its energy ten times its start's
 // in 0.46 s (semi-implicit Euler, zero gravity).
 // From seeds 2200–2500, all three with a soft body joined by joints (which the islands of unlike
-// masses leave to the passes): 2323, a 1 g box on a rod to a 2.6 g polygon, among a soft ellipse
+// masses then left to the passes): 2323, a 1 g box on a rod to a 2.6 g polygon, among a soft ellipse
 // on two rods to a circle, through the floor at 1.7 s (explicit Euler); 2429, a soft box of
 // 150 t/m² pinned twice to a circle pinned to a 373 kg one, the energy 39 % up in the first step
 // of 1/60 s (RK4, drag); 2468, a soft polygon pinned to the world and a circle on a rod and a pin
@@ -197,7 +197,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("
 // Euler, 1/240 s). From seeds 7033 on, with 0.1 rad splits for spins among unlike masses and for
 // rods: 7042, a 42 g box on a pin and a rod to a 1.1 kg polygon pinned to a 12 kg ellipse at 98
 // m/s, beside a 3.4 t soft box at 81 m/s, through the floor at 0.125 s (semi-implicit Euler, 1/240
-// s; the islands of unlike masses leave worlds with soft bodies to the passes).
+// s; the islands of unlike masses then left worlds with soft bodies to the passes).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindingsBeyond200, SoakFinding,
                          ::testing::Values("2087", "2146", "4062", "4961", "5292", "6118"),
                          seedName);

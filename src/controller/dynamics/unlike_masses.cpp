@@ -83,6 +83,23 @@ Scalar effect(const ConstraintRow& i, const ConstraintRow& j, std::span<const So
     return sum;
 }
 
+/// Moves a contact row's side on a soft body's ellipse onto the grid's aggregate `grid` (`sign`:
+/// −1 for side A, +1 for B; `r`, the arm from the ellipse's impulse origin, and `share` are that
+/// side's). The arm runs from the aggregate to the contact point, where the other body's arm ends,
+/// so that the island's impulses keep the angular momentum; the share is the aggregate's, so that
+/// every row on the grid weighs it alike (effect() is then symmetric); and the offset keeps the
+/// row's present value: what the ellipse's own velocity adds to the grid's rigid motion there. The
+/// grid hands its aggregate's change on to the ellipse at the ellipse's centre
+/// (Simulation::shareJointMotion), which the row sees only to within the turn across the ellipse.
+void onGrid(ConstraintRow& row, const SolverBody& ellipse, const SolverBody& grid, Vec2& r, Scalar& share, Scalar sign)
+{
+    r = impulseOrigin(ellipse) + r - grid.position;
+    const Scalar gridShare = velocityShare(grid);
+    const Vec2 rigid = grid.velocity + cross(grid.angularVelocity, r);
+    row.offset += sign * row.direction.dot(Vec2(share * ellipse.velocity - gridShare * rigid));
+    share = gridShare;
+}
+
 } // namespace
 
 Scalar rowValue(const ConstraintRow& row, std::span<const SolverBody> bodies)
@@ -252,45 +269,27 @@ void UnlikeMassIslands::gatherRows(std::uint32_t root, std::span<const SolverBod
             row.bodyA = moverA;
             row.bodyB = moverB;
             row.contact = true;
-            // The contact's points from its bodies' origins, m.
-            Vec2 pointA;
-            Vec2 pointB;
             if (positions) {
-                // Out of the overlap past the slop, as the position passes aim.
+                // Out of the overlap past the slop, as the position passes aim (an island with a
+                // soft body has no position solve: see solvePositions).
                 const detail::ContactGeometry look =
                     detail::contactGeometry(c, point, a, b, Vec2(std::cos(a.angle), std::sin(a.angle)),
                                             Vec2(std::cos(b.angle), std::sin(b.angle)));
                 row.direction = look.normal;
-                pointA = a.position + look.rA;
-                pointB = b.position + look.rB;
+                row.rA = look.rA;
+                row.rB = look.rB;
                 row.offset = look.separation + constants::kLinearSlop;
             } else {
                 row.direction = c.normal;
-                pointA = impulseOrigin(a) + point.rA;
-                pointB = impulseOrigin(b) + point.rB;
+                row.rA = point.rA;
+                row.rB = point.rB;
                 row.shareA = velocityShare(a);
                 row.shareB = velocityShare(b);
                 row.offset = h > 0 ? std::max(point.closingGap, 0.0) / h : 0;
-            }
-            // From the movers' origins (the position solve has no soft body: see solvePositions).
-            const auto origin = [&](std::uint32_t index) {
-                return positions ? bodies[index].position : impulseOrigin(bodies[index]);
-            };
-            row.rA = pointA - origin(moverA);
-            row.rB = pointB - origin(moverB);
-            if (!positions) {
-                // An ellipse's own velocity beyond its grid's rigid motion at the point, which the
-                // aggregate's change leaves as it is.
-                if (c.bodyA != moverA) {
-                    const SolverBody& grid = bodies[moverA];
-                    const Vec2 own = a.velocity - grid.velocity - cross(grid.angularVelocity, row.rA);
-                    row.offset -= row.shareA * row.direction.dot(own);
-                }
-                if (c.bodyB != moverB) {
-                    const SolverBody& grid = bodies[moverB];
-                    const Vec2 own = b.velocity - grid.velocity - cross(grid.angularVelocity, row.rB);
-                    row.offset += row.shareB * row.direction.dot(own);
-                }
+                if (c.bodyA != moverA)
+                    onGrid(row, a, bodies[moverA], row.rA, row.shareA, -1);
+                if (c.bodyB != moverB)
+                    onGrid(row, b, bodies[moverB], row.rB, row.shareB, 1);
             }
             m_rows.push_back(row);
         }
@@ -322,10 +321,11 @@ void UnlikeMassIslands::solveVelocities(std::span<SolverBody> bodies, const Join
     // one look at the masses, and nothing more.
     Scalar lightestInverse = 0;
     Scalar heaviestInverse = std::numeric_limits<Scalar>::infinity();
-    for (const SolverBody& body : bodies) {
-        if (body.invMass > 0) {
-            lightestInverse = std::max(lightestInverse, body.invMass);
-            heaviestInverse = std::min(heaviestInverse, body.invMass);
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        // A soft body by its aggregate, not by its ellipses.
+        if (bodies[i].invMass > 0 && mover(i) == i) {
+            lightestInverse = std::max(lightestInverse, bodies[i].invMass);
+            heaviestInverse = std::min(heaviestInverse, bodies[i].invMass);
         }
     }
     if (!(lightestInverse > kMassRatio * heaviestInverse))
