@@ -97,6 +97,9 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // joints starting the next step cold (JointSolver::forgetImpulses): the passes' sums of a step
 // whose outcome the island replaced, handed on as the next warm start, grew step by step (a soft
 // box welded by a pin and a rod to a polygon, 1352, spun its grid to 2,357 rad/s in the passes).
+// 5292, whose 106 kg ellipse on a rod of 2.8 cm to the world gained 8 % of its energy a second, by
+// a rod to the world following its anchor on the arc of the body's turn as each pass finds it
+// (JointSolver::solveVelocities; test RodJoint.AFastTumblingEllipseOnAShortRodKeepsItsEnergy).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "31", "49", "51", "61",
                                            "65", "66", "68", "69", "86", "87", "92", "111", "117", "121", "131",
@@ -106,7 +109,7 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                                            "2468", "2822", "3419", "3433", "3503", "3641", "331", "417",
                                            "520", "1352", "1489", "2026", "2833", "2840", "2932", "3937",
                                            "4386", "5812", "104-g2", "111-g2", "131-g2", "1210", "3446", "3785",
-                                           "4458", "4870", "6097", "6257", "6327", "7042"),
+                                           "4458", "4870", "6097", "6257", "6327", "7042", "5292"),
                          seedName);
 
 // Open. The soak as it runs now has no known finding (soak/known_findings.txt); 131-g2 was its
@@ -127,7 +130,7 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("104", "140", "177"), seedName);
 
 // Open, beyond the 200 seeds that ctest runs (docs/testing.md, "Beyond the 200"), 2087, 2146,
-// 4062, 4961, 5292 and 6118 (the others told of here are fixed, above): of the six
+// 4062, 4961 and 6118 (the others told of here are fixed, above): of the six
 // findings of seeds 201 to 400, 201, 239, 264, 306 and 335 are fixed (above), and so are 331,
 // 417, 520, 1352, 1437, 1489, 1995, 2026, 2163, 2323, 2429, 2468, 2638, 2822, 2833, 2840, 2932,
 // 3937 and 4386 of those below, which tell each one as it was found. 331: a light
@@ -199,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindings, SoakFinding, ::testing::Values("
 // m/s, beside a 3.4 t soft box at 81 m/s, through the floor at 0.125 s (semi-implicit Euler, 1/240
 // s; the islands of unlike masses then left worlds with soft bodies to the passes).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindingsBeyond200, SoakFinding,
-                         ::testing::Values("2087", "2146", "4062", "4961", "5292", "6118"),
+                         ::testing::Values("2087", "2146", "4062", "4961", "6118"),
                          seedName);
 
 } // namespace
