@@ -68,16 +68,29 @@ Eigen::Matrix2d safeInverse(const Eigen::Matrix2d& k)
 /// every other body but a circle (0.1 rad in a world of unlike masses).
 constexpr Scalar kMaxArcTurn = std::numbers::pi / 4;
 
-/// How far an anchor at lever arm r on `body`, turning at its present spin for `share` of a step
-/// of h seconds, leaves the tangent along its arc, over h (m/s): (R(h·ω) − 1 − h·ω ×)·r / h; zero
-/// past kMaxArcTurn (the body keeps the tangent).
+/// How far an anchor at lever arm r, turned by `turn` over a step of h seconds, leaves the tangent
+/// along its arc, over h (m/s): (R(turn) − 1 − turn ×)·r / h.
+Vec2 arcFor(const Vec2& r, Scalar turn, Scalar h)
+{
+    return Vec2((rotate(r, turn) - r - cross(turn, r)) / h);
+}
+
+/// The same for an anchor on `body` turning at its present spin for `share` of the step; zero past
+/// kMaxArcTurn (the body keeps the tangent).
 Vec2 arcOf(const SolverBody& body, const Vec2& r, Scalar share, Scalar h)
 {
     const Scalar turn = share * h * body.angularVelocity;
     if (!(std::abs(turn) <= kMaxArcTurn) || !(h > 0))
         return Vec2::Zero();
-    return Vec2((rotate(r, turn) - r - cross(turn, r)) / h);
+    return arcFor(r, turn, h);
 }
+
+/// The most (r/k)² (anchor distance r, radius of gyration k) for which a rod to the world follows
+/// its anchor's arc afresh in each pass (JointSolver::solveVelocities): an anchor on or in its
+/// body. For an anchor far outside a small body (a 5 cm ball on a rod from a point 1 m off its
+/// centre, 800) the rod's pull mostly spins the body, each pass's turn overshoots the last, and
+/// a pendulum so made was flung apart within 6 s; it keeps the arc of the passes' first turn.
+constexpr Scalar kMaxArcFollowRatio = 8;
 
 /// How much faster than its arcs a block's bodies may be set moving by them (JointSolver::
 /// buildBlocks): an anchor's arc is a correction of h·ω²·r to its velocity, which moves the
@@ -267,8 +280,14 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         // Newton step) seed 23. A body turning more than kMaxArcTurn in the step (a circle on a
         // rod, whose own spin spinSubsteps leaves alone) keeps the tangent. A rod to the world
         // takes its arc afresh in each pass, with the turn the pass finds (solveVelocities).
-        if (c.bodyB == kWorld)
+        if (c.bodyB == kWorld) {
             c.arc = -arcOf(a, c.rA, c.shareA, h);
+            // (r/k)², k the body's radius of gyration: how much more the rod's pull at r turns the
+            // body than it moves it. An anchor on or in a body has at most about 4 (a box's
+            // corner 3, a disc's rim 2); one far outside a small body, hundreds.
+            const Scalar turnOverMove = a.invMass > 0 ? a.invInertia * c.rA.squaredNorm() / a.invMass : 0;
+            c.followsArc = c.type == model::JointType::Rod && !c.arc.isZero() && turnOverMove <= kMaxArcFollowRatio;
+        }
         m_joints.push_back(c);
     }
     buildBlocks(bodies);
@@ -380,10 +399,14 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
         // not be. A box on a rod from its corner, swinging under gravity, lost 6.5 % of its
         // energy in a minute at 1/240 s; a 106 kg ellipse at 77 m/s on a rod of 2.8 cm whose ends
         // went round each other faster than the substeps could follow gained 8 % a second (soak
-        // seed 5292). Taken afresh (a Newton step on the end condition) both keep their energy.
-        // Between two bodies the arcs are not taken (prepare says why).
-        if (c.type == model::JointType::Rod && c.bodyB == kWorld)
-            c.arc = -arcOf(a, c.rA, c.shareA, h);
+        // seed 5292). Only for an anchor on or in its body (prepare, kMaxArcFollowRatio); a turn
+        // past kMaxArcTurn keeps the arc it had. Between two bodies the arcs are not taken
+        // (prepare says why).
+        if (c.followsArc) {
+            const Scalar turn = c.shareA * h * a.angularVelocity;
+            if (std::abs(turn) <= kMaxArcTurn)
+                c.arc = -arcFor(c.rA, turn, h);
+        }
         const Vec2 dv = relativeVelocity(c);
         if (c.type == model::JointType::Pin) {
             // The anchors move together: h·dv = 0.
@@ -440,12 +463,15 @@ void JointSolver::appendRows(std::span<const SolverBody> bodies, Scalar h, std::
         row.offset = 0;
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
+        // A rod that follows its arc takes it at the body's present turn, as its pass would.
+        const Scalar turn = c.shareA * h * a.angularVelocity;
+        const Vec2 arc = c.followsArc && h > 0 && std::abs(turn) <= kMaxArcTurn ? Vec2(-arcFor(c.rA, turn, h)) : c.arc;
         const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
-                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA)) + c.arc;
+                        c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA)) + arc;
         const Vec2 predicted = c.separation + h * dv;
         const Scalar error = predicted.norm() - c.heldLength;
         const Scalar wanted = 2 * predicted.dot(c.axis) > error && h > 0 ? error / h : c.axis.dot(dv);
-        row.offset = wanted - c.axis.dot(dv - c.arc);
+        row.offset = wanted - c.axis.dot(dv - arc);
         rows.push_back(row);
     }
 }

@@ -90,8 +90,13 @@ private:
         /// the anchors on from there.
         Vec2 separation = Vec2::Zero();
         /// How far the anchors' arcs over the step part from their tangents, B's less A's, over
-        /// h (m/s): added to their relative velocity in the end condition (see prepare).
+        /// h (m/s): added to their relative velocity in the end condition (see prepare). A rod to
+        /// the world that follows its arc takes it afresh in each pass (solveVelocities).
         Vec2 arc = Vec2::Zero();
+        /// Rod to the world: its anchor follows its arc at the body's turn as each pass finds it
+        /// (set in prepare, where the body's turn over the step is within kMaxArcTurn and the
+        /// anchor on or in the body, kMaxArcFollowRatio).
+        bool followsArc = false;
         Scalar length = 0; ///< rod length, m
         /// Rod: the distance the velocity passes hold, |separation|, m. Its error against `length`
         /// is the position passes' to remove (solveVelocities says why).
