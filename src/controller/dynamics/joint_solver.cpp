@@ -284,9 +284,13 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
             c.arc = -arcOf(a, c.rA, c.shareA, h);
             // (r/k)², k the body's radius of gyration: how much more the rod's pull at r turns the
             // body than it moves it. An anchor on or in a body has at most about 4 (a box's
-            // corner 3, a disc's rim 2); one far outside a small body, hundreds.
+            // corner 3, a disc's rim 2); one far outside a small body, hundreds. A soft body's
+            // turn between passes is its grid's, fitted afresh to ellipses that the contacts
+            // move, not the rod's doing: it keeps the first turn's arc (a soft box on a rod to
+            // the world, following its grid's turn, was flung out of the box: soak seed 8426).
             const Scalar turnOverMove = a.invMass > 0 ? a.invInertia * c.rA.squaredNorm() / a.invMass : 0;
-            c.followsArc = c.type == model::JointType::Rod && !c.arc.isZero() && turnOverMove <= kMaxArcFollowRatio;
+            c.followsArc = c.type == model::JointType::Rod && !c.arc.isZero() &&
+                           turnOverMove <= kMaxArcFollowRatio && !world.bodies[c.bodyA].soft;
         }
         m_joints.push_back(c);
     }
