@@ -85,6 +85,15 @@ Vec2 arcOf(const SolverBody& body, const Vec2& r, Scalar share, Scalar h)
     return arcFor(r, turn, h);
 }
 
+/// A rod's arc as its pass takes it now: afresh at the turn `body` (its A) has now where the rod
+/// follows its arc and that turn is within kMaxArcTurn, else the one prepare gave it.
+template <typename Rod>
+Vec2 presentArc(const Rod& rod, const SolverBody& body, Scalar h)
+{
+    const Scalar turn = rod.shareA * h * body.angularVelocity;
+    return rod.followsArc && h > 0 && std::abs(turn) <= kMaxArcTurn ? Vec2(-arcFor(rod.rA, turn, h)) : rod.arc;
+}
+
 /// The most (r/k)² (anchor distance r, radius of gyration k) for which a rod to the world follows
 /// its anchor's arc afresh in each pass (JointSolver::solveVelocities): an anchor on or in its
 /// body. For an anchor far outside a small body (a 5 cm ball on a rod from a point 1 m off its
@@ -406,11 +415,8 @@ void JointSolver::solveVelocities(std::span<SolverBody> bodies, Scalar h)
         // seed 5292). Only for an anchor on or in its body (prepare, kMaxArcFollowRatio); a turn
         // past kMaxArcTurn keeps the arc it had. Between two bodies the arcs are not taken
         // (prepare says why).
-        if (c.followsArc) {
-            const Scalar turn = c.shareA * h * a.angularVelocity;
-            if (std::abs(turn) <= kMaxArcTurn)
-                c.arc = -arcFor(c.rA, turn, h);
-        }
+        if (c.followsArc)
+            c.arc = presentArc(c, a, h);
         const Vec2 dv = relativeVelocity(c);
         if (c.type == model::JointType::Pin) {
             // The anchors move together: h·dv = 0.
@@ -468,8 +474,7 @@ void JointSolver::appendRows(std::span<const SolverBody> bodies, Scalar h, std::
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
         // A rod that follows its arc takes it at the body's present turn, as its pass would.
-        const Scalar turn = c.shareA * h * a.angularVelocity;
-        const Vec2 arc = c.followsArc && h > 0 && std::abs(turn) <= kMaxArcTurn ? Vec2(-arcFor(c.rA, turn, h)) : c.arc;
+        const Vec2 arc = presentArc(c, a, h);
         const Vec2 dv = c.shareB * Vec2(b.velocity + cross(b.angularVelocity, c.rB)) -
                         c.shareA * Vec2(a.velocity + cross(a.angularVelocity, c.rA)) + arc;
         const Vec2 predicted = c.separation + h * dv;
