@@ -640,6 +640,10 @@
         <source>PNG pictures (*.png);;All files (*)</source>
         <translation>PNG-Bilder (*.png);;Alle Dateien (*)</translation>
     </message>
+    <message>
+        <source>Drag a box over the plot to zoom in on it; right-click to see everything again</source>
+        <translation>Ziehen Sie ein Rechteck über das Diagramm, um es zu vergrößern; Rechtsklick zeigt wieder alles</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::IntegratorGhosts</name>

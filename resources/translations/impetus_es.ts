@@ -640,6 +640,10 @@
         <source>PNG pictures (*.png);;All files (*)</source>
         <translation>Imágenes PNG (*.png);;Todos los archivos (*)</translation>
     </message>
+    <message>
+        <source>Drag a box over the plot to zoom in on it; right-click to see everything again</source>
+        <translation>Arrastre un rectángulo sobre el gráfico para ampliarlo; clic derecho para volver a verlo todo</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::IntegratorGhosts</name>

@@ -107,6 +107,10 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
     m_chartView->setMinimumSize(kMinChartWidthPx, kMinChartHeightPx);
     m_chartView->viewport()->installEventFilter(this);
     m_chartView->viewport()->setMouseTracking(true);
+    // A box dragged over the plot zooms in on it (to read a time to a step off a long run); a
+    // right click shows the whole record again.
+    m_chartView->setRubberBand(QChartView::RectangleRubberBand);
+    m_chartView->setToolTip(tr("Drag a box over the plot to zoom in on it; right-click to see everything again"));
     for (const GraphQuantity q : graphQuantities()) {
         if (q != GraphQuantity::Time)
             m_yBox->addItem(quantityLabel(q), static_cast<int>(q));
@@ -127,6 +131,14 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
     m_marker->setMarkerSize(kMarkerSizePx);
     m_marker->setColor(constants::kSelectionColor);
     m_chart->setMargins(QMargins(kMarginPx, kMarginPx, kMarginPx, kMarginPx));
+    // A range the graph did not set itself is the user's zoom: kept until a right click, or a
+    // new body or quantity, as new records come in.
+    for (QValueAxis* axis : {m_axisX, m_axisY}) {
+        connect(axis, &QValueAxis::rangeChanged, this, [this] {
+            if (!m_settingRange)
+                m_zoomed = true;
+        });
+    }
 
     auto* exportCsv = new QPushButton(tr("Export CSV…"), this);
     exportCsv->setObjectName(QStringLiteral("graphExportCsv"));
@@ -220,7 +232,8 @@ void GraphPanel::setQuantities(GraphQuantity y, GraphQuantity x)
         m_yBox->setCurrentIndex(m_yBox->findData(static_cast<int>(m_y)));
         m_xBox->setCurrentIndex(m_xBox->findData(static_cast<int>(m_x)));
     }
-    // The records hold every quantity: a new choice is plotted from them at once.
+    // The records hold every quantity: a new choice is plotted from them at once, all of it.
+    m_zoomed = false;
     redraw();
     emit titleChanged(title());
 }
@@ -242,6 +255,7 @@ GraphRecord GraphPanel::currentRecord() const
 
 void GraphPanel::restart()
 {
+    m_zoomed = false;
     m_records.clear();
     if (m_body)
         m_records.push_back(currentRecord());
@@ -341,16 +355,29 @@ void GraphPanel::redraw()
         const GraphRecord now = currentRecord();
         m_marker->append(valueOf(m_x, now), valueOf(m_y, now));
     }
-    const auto [x0, x1] = paddedRange(xLow, xHigh);
-    const auto [y0, y1] = paddedRange(yLow, yHigh);
-    m_axisX->setRange(x0, x1);
-    m_axisY->setRange(y0, y1);
+    if (!m_zoomed) {
+        const auto [x0, x1] = paddedRange(xLow, xHigh);
+        const auto [y0, y1] = paddedRange(yLow, yHigh);
+        m_settingRange = true;
+        m_axisX->setRange(x0, x1);
+        m_axisY->setRange(y0, y1);
+        m_settingRange = false;
+    }
     m_axisX->setTitleText(quantityLabel(m_x));
     m_axisY->setTitleText(quantityLabel(m_y));
 }
 
 bool GraphPanel::eventFilter(QObject* watched, QEvent* event)
 {
+    // A right click ends the zoom: the whole record again (QChartView's own right click would
+    // only undo one zoom, and only within its own history).
+    if (watched == m_chartView->viewport() &&
+        (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::MouseButtonRelease) &&
+        static_cast<QMouseEvent*>(event)->button() == Qt::RightButton) {
+        if (event->type() == QEvent::MouseButtonRelease)
+            showAll();
+        return true;
+    }
     if (watched == m_chartView->viewport() && event->type() == QEvent::MouseMove && !m_records.empty()) {
         const auto* mouse = static_cast<QMouseEvent*>(event);
         const QPointF value = m_chart->mapToValue(m_chartView->mapToScene(mouse->position().toPoint()), m_series);
@@ -365,6 +392,12 @@ bool GraphPanel::eventFilter(QObject* watched, QEvent* event)
                                .arg(valueOf(m_y, *nearest), 0, 'g', 8));
     }
     return QWidget::eventFilter(watched, event);
+}
+
+void GraphPanel::showAll()
+{
+    m_zoomed = false;
+    redraw();
 }
 
 std::optional<QString> GraphPanel::exportCsv(const QString& path) const

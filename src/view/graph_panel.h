@@ -34,8 +34,9 @@ class SimulationRunner;
 /// follows the timeline when it is scrubbed; Play from a past step (or an edit) forgets the
 /// records after it (discardAfter()).
 ///
-/// Hovering over the plot shows the record nearest to the cursor's x ("t = 1.2375 s, vy =
-/// −12.14 m/s") in the readout label under it. Export CSV writes every record kept: "time,body"
+/// A box dragged over the plot zooms in on it, and the zoom stays while records come in; a right
+/// click shows every record again. Hovering over the plot shows the record nearest to the
+/// cursor's x ("t = 1.2375 s, vy = −12.14 m/s") in the readout label under it. Export CSV writes every record kept: "time,body"
 /// and then the plotted columns (csvColumn(), impetus-cli's names and SI units), numbers in the
 /// shortest form that reads back to the same double. Export PNG writes the chart as shown.
 /// Object names: "graphBody", "graphY", "graphX", "graphReadout", "graphChartView".
@@ -66,6 +67,12 @@ public:
     std::optional<QString> exportCsv(const QString& path) const;
     /// Writes the chart, as shown, to `path` as PNG. Returns the problem when it cannot.
     std::optional<QString> exportPng(const QString& path) const;
+
+    /// Whether the plot shows a part the user zoomed in on (a box dragged over it) rather than
+    /// every record.
+    bool isZoomed() const { return m_zoomed; }
+    /// Ends the zoom: every record is shown again (a right click on the plot does it).
+    void showAll();
 
     /// The chart view (for tests and the screenshot).
     QChartView* chartView() const { return m_chartView; }
@@ -118,6 +125,8 @@ private:
     QValueAxis* m_axisX;
     QValueAxis* m_axisY;
     QTimer* m_redrawTimer;
+    bool m_zoomed = false; ///< the axes show the user's zoom, not the records' range
+    bool m_settingRange = false; ///< redraw() is setting the axes' range
 };
 
 } // namespace impetus::view

@@ -1,4 +1,4 @@
-// Not a test: the energy ledger picture of docs/explainers-energy.md, taken from the real window
+// Not a test: the energy ledger picture of docs/explainers.md, taken from the real window
 // with View › Energy Ledger open on the default example after a few seconds of running.
 // scripts/screenshots runs it under Xvfb. Usage: energy_screenshots OUTPUT_DIRECTORY
 

@@ -2,6 +2,7 @@
 // arrows found in a grab, their legend and scale, trails with dots every N steps that follow the
 // timeline, and a graph of a falling body's vy exported as CSV.
 
+#include "support/pendulum_theory.h"
 #include "test_files.h"
 #include "test_settings.h"
 #include "test_worlds.h"
@@ -19,6 +20,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QChart>
 #include <QChartView>
 #include <QComboBox>
 #include <QDockWidget>
@@ -28,6 +30,7 @@
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QTemporaryDir>
+#include <QValueAxis>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
@@ -126,6 +129,7 @@ private slots:
     void trailsHaveDotsAndFollowTheTimeline();
     void graphOfAFallingBodysVyHasSlopeMinusG();
     void graphExportsAPictureAndFollowsTheTimeline();
+    void pendulumPeriodReadOffTheGraphToAMillisecond();
     void rulerBetweenTwoClicksReadsTheDistance();
     void protractorReadsTheAngle();
     void probeFollowsAFallingBall();
@@ -350,6 +354,141 @@ void InstrumentsTest::graphExportsAPictureAndFollowsTheTimeline()
     // A file that cannot be written is a message, not a crash.
     const std::optional<QString> error = graph->exportCsv(dir.filePath(QStringLiteral("no/such/folder/x.csv")));
     QVERIFY(error.has_value());
+}
+
+// Issue 13: "a student can read its period off the graph to 1 ms", as docs/app.md ("Graphs")
+// tells them: a graph of the bob's x against time, eleven swings, a box dragged over the first
+// upward crossing of x = 0 to zoom in, the cursor on the crossing, the readout's time; the same
+// ten periods later. And from the exported CSV, interpolating between the rows on either side.
+void InstrumentsTest::pendulumPeriodReadOffTheGraphToAMillisecond()
+{
+    MainWindow window;
+    QVERIFY(window.openScene(QStringLiteral(":/examples/pendulum.json")).isEmpty());
+    window.resize(1100, 750);
+    QVERIFY(showActive(window));
+    const model::World& world = window.runner().world();
+    const std::optional<model::BodyId> bob = world.findBody("bob");
+    QVERIFY(bob.has_value());
+    QCOMPARE(world.joints.size(), std::size_t{1});
+    const impetus::Vec2 pivot = world.joints[0].anchorB;
+    const impetus::Vec2 arm = world.bodies[bob->index].state.position - pivot;
+    const double expected =
+        impetus::testing::pendulumPeriod(arm.norm(), -world.settings.gravity.y(), std::atan2(arm.x(), -arm.y()));
+    const double h = world.settings.timeStep;
+    QCOMPARE(pivot.x(), 0.0); // so that the crossings of x = 0 are the bob's passes under the pivot
+
+    window.document().setSelection(impetus::view::Selection{{static_cast<int>(bob->index)}, {}, {}});
+    window.newGraphAction()->trigger();
+    QCOMPARE(window.graphPanels().size(), std::size_t{1});
+    GraphPanel* graph = window.graphPanels().front();
+    auto* yBox = graph->findChild<QComboBox*>(QStringLiteral("graphY"));
+    QVERIFY(yBox);
+    const int x = yBox->findText(QStringLiteral("x (m)"));
+    QVERIFY(x >= 0);
+    yBox->setCurrentIndex(x);
+    emit yBox->activated(x);
+    QCOMPARE(graph->bodyName(), QStringLiteral("bob"));
+
+    const int steps = static_cast<int>(std::ceil(11.3 * expected / h));
+    for (int done = 0; done < steps; done += 240)
+        window.runner().stepBy(std::min(240, steps - done));
+    const std::vector<impetus::view::GraphRecord>& records = graph->records();
+    QCOMPARE(records.size(), static_cast<std::size_t>(steps) + 1);
+
+    // Where the curve meets the axis going up: what the student sees on the plot.
+    std::vector<double> crossings;
+    for (std::size_t i = 1; i < records.size(); ++i) {
+        const double before = records[i - 1].body.position.x();
+        const double after = records[i].body.position.x();
+        if (before < 0 && after >= 0)
+            crossings.push_back(records[i - 1].time + (records[i].time - records[i - 1].time) * -before / (after - before));
+    }
+    QVERIFY(crossings.size() >= 11);
+
+    QChartView* view = graph->chartView();
+    QChart* chart = view->chart();
+    QTRY_VERIFY(view->isVisible() && !chart->plotArea().isEmpty());
+    QAbstractSeries* curve = chart->series().front();
+    const auto pixelOf = [&](double t, double value) {
+        return view->mapFromScene(chart->mapToPosition(QPointF(t, value), curve));
+    };
+    auto* readout = graph->findChild<QLabel*>(QStringLiteral("graphReadout"));
+    QVERIFY(readout);
+    // Zoom in on a crossing with the mouse, twice (a second around it, then 60 ms), hover over
+    // it, read the time; right-click back to the whole run.
+    const auto dragBox = [&](const QPoint& from, const QPoint& to) {
+        QTest::mousePress(view->viewport(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(view->viewport(), (from + to) / 2);
+        QTest::mouseMove(view->viewport(), to);
+        QTest::mouseRelease(view->viewport(), Qt::LeftButton, {}, to);
+    };
+    const auto readCrossing = [&](double crossing) -> std::optional<double> {
+        dragBox(pixelOf(crossing - 0.5, 1.2), pixelOf(crossing + 0.5, -1.2));
+        if (!graph->isZoomed())
+            return std::nullopt;
+        dragBox(pixelOf(crossing - 0.03, 0.2), pixelOf(crossing + 0.03, -0.2));
+        // 60 ms across the plot now: a pixel is far less than a step.
+        if (pixelOf(crossing + h, 0).x() - pixelOf(crossing, 0).x() < 5)
+            return std::nullopt;
+        QTest::mouseMove(view->viewport(), pixelOf(crossing, 0));
+        const double time = readoutValue(readout->text(), QStringLiteral("time"));
+        QTest::mouseClick(view->viewport(), Qt::RightButton, {}, pixelOf(crossing, 0));
+        if (graph->isZoomed())
+            return std::nullopt;
+        return time;
+    };
+    const std::optional<double> first = readCrossing(crossings[0]);
+    const std::optional<double> eleventh = readCrossing(crossings[10]);
+    QVERIFY(first && eleventh);
+    // The readout gives the step nearest the crossing.
+    // The readout gives the step nearest the crossing (to within the cursor's pixel, 0.08 ms).
+    QVERIFY2(std::abs(*first - crossings[0]) <= h / 2 + 1e-4, qPrintable(readout->text()));
+    QVERIFY2(std::abs(*eleventh - crossings[10]) <= h / 2 + 1e-4, qPrintable(readout->text()));
+    const double hovered = (*eleventh - *first) / 10;
+    QVERIFY2(std::abs(hovered - expected) < 1e-3,
+             qPrintable(QStringLiteral("%1 against %2").arg(hovered, 0, 'g', 10).arg(expected, 0, 'g', 10)));
+
+    // From the CSV: the rows on either side of each crossing, interpolated.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pendulum.csv"));
+    QVERIFY(!graph->exportCsv(path));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.front(), QStringLiteral("time,body,x"));
+    std::vector<double> fromCsv;
+    double lastT = 0;
+    double lastX = 0;
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const QStringList cells = lines[i].split(QLatin1Char(','));
+        QCOMPARE(cells.size(), 3);
+        const double t = cells[0].toDouble();
+        const double value = cells[2].toDouble();
+        if (i > 1 && lastX < 0 && value >= 0)
+            fromCsv.push_back(lastT + (t - lastT) * -lastX / (value - lastX));
+        lastT = t;
+        lastX = value;
+    }
+    QVERIFY(fromCsv.size() >= 11);
+    const double interpolated = (fromCsv[10] - fromCsv[0]) / 10;
+    // The engine's swing keeps the large-amplitude period to a few tens of microseconds.
+    QVERIFY2(std::abs(interpolated - expected) < 1e-4,
+             qPrintable(QStringLiteral("%1 against %2").arg(interpolated, 0, 'g', 10).arg(expected, 0, 'g', 10)));
+
+    // A zoom stays while the run goes on; a right click shows the whole run again.
+    auto* timeAxis = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).front());
+    QVERIFY(timeAxis);
+    dragBox(pixelOf(crossings[3] - 0.5, 1.2), pixelOf(crossings[3] + 0.5, -1.2));
+    QVERIFY(graph->isZoomed());
+    const double zoomedMin = timeAxis->min();
+    const double zoomedMax = timeAxis->max();
+    QVERIFY(zoomedMax - zoomedMin < 1.5);
+    window.runner().stepBy(240);
+    QCOMPARE(timeAxis->min(), zoomedMin);
+    QCOMPARE(timeAxis->max(), zoomedMax);
+    QTest::mouseClick(view->viewport(), Qt::RightButton, {}, pixelOf(crossings[3], 0));
+    QVERIFY(!graph->isZoomed());
+    QVERIFY(timeAxis->min() <= 0 && timeAxis->max() >= graph->records().back().time);
 }
 
 void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
