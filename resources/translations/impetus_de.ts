@@ -2,6 +2,97 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>GraphQuantity</name>
+    <message>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>angle (rad)</source>
+        <translation>Winkel (rad)</translation>
+    </message>
+    <message>
+        <source>vx (m/s)</source>
+        <translation>vx (m/s)</translation>
+    </message>
+    <message>
+        <source>vy (m/s)</source>
+        <translation>vy (m/s)</translation>
+    </message>
+    <message>
+        <source>speed (m/s)</source>
+        <translation>Geschwindigkeit (m/s)</translation>
+    </message>
+    <message>
+        <source>ω (rad/s)</source>
+        <translation>ω (rad/s)</translation>
+    </message>
+    <message>
+        <source>px (kg·m/s)</source>
+        <translation>px (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>py (kg·m/s)</source>
+        <translation>py (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>kinetic energy (J)</source>
+        <translation>kinetische Energie (J)</translation>
+    </message>
+    <message>
+        <source>potential energy (J)</source>
+        <translation>potentielle Energie (J)</translation>
+    </message>
+    <message>
+        <source>kinetic + potential (J)</source>
+        <translation>kinetisch + potentiell (J)</translation>
+    </message>
+    <message>
+        <source>collisions</source>
+        <translation>Kollisionen</translation>
+    </message>
+    <message>
+        <source>world kinetic energy (J)</source>
+        <translation>kinetische Energie der Welt (J)</translation>
+    </message>
+    <message>
+        <source>world potential energy (J)</source>
+        <translation>potentielle Energie der Welt (J)</translation>
+    </message>
+    <message>
+        <source>world elastic energy (J)</source>
+        <translation>elastische Energie der Welt (J)</translation>
+    </message>
+    <message>
+        <source>world total energy (J)</source>
+        <translation>Gesamtenergie der Welt (J)</translation>
+    </message>
+    <message>
+        <source>world px (kg·m/s)</source>
+        <translation>px der Welt (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>world py (kg·m/s)</source>
+        <translation>py der Welt (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>world angular momentum (kg·m²/s)</source>
+        <translation>Drehimpuls der Welt (kg·m²/s)</translation>
+    </message>
+    <message>
+        <source>world collisions</source>
+        <translation>Kollisionen der Welt</translation>
+    </message>
+</context>
+<context>
     <name>RotationGesture</name>
     <message>
         <source>Rotate</source>

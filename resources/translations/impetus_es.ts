@@ -2,6 +2,97 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>GraphQuantity</name>
+    <message>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>angle (rad)</source>
+        <translation>ángulo (rad)</translation>
+    </message>
+    <message>
+        <source>vx (m/s)</source>
+        <translation>vx (m/s)</translation>
+    </message>
+    <message>
+        <source>vy (m/s)</source>
+        <translation>vy (m/s)</translation>
+    </message>
+    <message>
+        <source>speed (m/s)</source>
+        <translation>rapidez (m/s)</translation>
+    </message>
+    <message>
+        <source>ω (rad/s)</source>
+        <translation>ω (rad/s)</translation>
+    </message>
+    <message>
+        <source>px (kg·m/s)</source>
+        <translation>px (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>py (kg·m/s)</source>
+        <translation>py (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>kinetic energy (J)</source>
+        <translation>energía cinética (J)</translation>
+    </message>
+    <message>
+        <source>potential energy (J)</source>
+        <translation>energía potencial (J)</translation>
+    </message>
+    <message>
+        <source>kinetic + potential (J)</source>
+        <translation>cinética + potencial (J)</translation>
+    </message>
+    <message>
+        <source>collisions</source>
+        <translation>colisiones</translation>
+    </message>
+    <message>
+        <source>world kinetic energy (J)</source>
+        <translation>energía cinética del mundo (J)</translation>
+    </message>
+    <message>
+        <source>world potential energy (J)</source>
+        <translation>energía potencial del mundo (J)</translation>
+    </message>
+    <message>
+        <source>world elastic energy (J)</source>
+        <translation>energía elástica del mundo (J)</translation>
+    </message>
+    <message>
+        <source>world total energy (J)</source>
+        <translation>energía total del mundo (J)</translation>
+    </message>
+    <message>
+        <source>world px (kg·m/s)</source>
+        <translation>px del mundo (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>world py (kg·m/s)</source>
+        <translation>py del mundo (kg·m/s)</translation>
+    </message>
+    <message>
+        <source>world angular momentum (kg·m²/s)</source>
+        <translation>momento angular del mundo (kg·m²/s)</translation>
+    </message>
+    <message>
+        <source>world collisions</source>
+        <translation>colisiones del mundo</translation>
+    </message>
+</context>
+<context>
     <name>RotationGesture</name>
     <message>
         <source>Rotate</source>

@@ -6,8 +6,58 @@ namespace impetus::view {
 
 namespace {
 
-/// tr() for this file's free functions.
-QString tr(const char* text) { return QCoreApplication::translate("GraphQuantity", text); }
+/// The untranslated label of `quantity`, marked for lupdate (context "GraphQuantity"; a tr() of
+/// this file's own would not be found by it).
+const char* labelText(GraphQuantity quantity)
+{
+    switch (quantity) {
+    case GraphQuantity::Time:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "t (s)");
+    case GraphQuantity::X:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "x (m)");
+    case GraphQuantity::Y:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "y (m)");
+    case GraphQuantity::Angle:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "angle (rad)");
+    case GraphQuantity::Vx:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "vx (m/s)");
+    case GraphQuantity::Vy:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "vy (m/s)");
+    case GraphQuantity::Speed:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "speed (m/s)");
+    case GraphQuantity::AngularVelocity:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "ω (rad/s)");
+    case GraphQuantity::Px:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "px (kg·m/s)");
+    case GraphQuantity::Py:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "py (kg·m/s)");
+    case GraphQuantity::Kinetic:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "kinetic energy (J)");
+    case GraphQuantity::Potential:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "potential energy (J)");
+    case GraphQuantity::Energy:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "kinetic + potential (J)");
+    case GraphQuantity::Collisions:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "collisions");
+    case GraphQuantity::WorldKinetic:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world kinetic energy (J)");
+    case GraphQuantity::WorldPotential:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world potential energy (J)");
+    case GraphQuantity::WorldElastic:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world elastic energy (J)");
+    case GraphQuantity::WorldTotal:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world total energy (J)");
+    case GraphQuantity::WorldPx:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world px (kg·m/s)");
+    case GraphQuantity::WorldPy:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world py (kg·m/s)");
+    case GraphQuantity::WorldAngularMomentum:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world angular momentum (kg·m²/s)");
+    case GraphQuantity::WorldCollisions:
+        return QT_TRANSLATE_NOOP("GraphQuantity", "world collisions");
+    }
+    return "";
+}
 
 } // namespace
 
@@ -33,31 +83,7 @@ bool isWorldQuantity(GraphQuantity quantity) { return quantity >= GraphQuantity:
 
 QString quantityLabel(GraphQuantity quantity)
 {
-    switch (quantity) {
-    case GraphQuantity::Time: return tr("t (s)");
-    case GraphQuantity::X: return tr("x (m)");
-    case GraphQuantity::Y: return tr("y (m)");
-    case GraphQuantity::Angle: return tr("angle (rad)");
-    case GraphQuantity::Vx: return tr("vx (m/s)");
-    case GraphQuantity::Vy: return tr("vy (m/s)");
-    case GraphQuantity::Speed: return tr("speed (m/s)");
-    case GraphQuantity::AngularVelocity: return tr("ω (rad/s)");
-    case GraphQuantity::Px: return tr("px (kg·m/s)");
-    case GraphQuantity::Py: return tr("py (kg·m/s)");
-    case GraphQuantity::Kinetic: return tr("kinetic energy (J)");
-    case GraphQuantity::Potential: return tr("potential energy (J)");
-    case GraphQuantity::Energy: return tr("kinetic + potential (J)");
-    case GraphQuantity::Collisions: return tr("collisions");
-    case GraphQuantity::WorldKinetic: return tr("world kinetic energy (J)");
-    case GraphQuantity::WorldPotential: return tr("world potential energy (J)");
-    case GraphQuantity::WorldElastic: return tr("world elastic energy (J)");
-    case GraphQuantity::WorldTotal: return tr("world total energy (J)");
-    case GraphQuantity::WorldPx: return tr("world px (kg·m/s)");
-    case GraphQuantity::WorldPy: return tr("world py (kg·m/s)");
-    case GraphQuantity::WorldAngularMomentum: return tr("world angular momentum (kg·m²/s)");
-    case GraphQuantity::WorldCollisions: return tr("world collisions");
-    }
-    return {};
+    return QCoreApplication::translate("GraphQuantity", labelText(quantity));
 }
 
 QString csvColumn(GraphQuantity quantity)

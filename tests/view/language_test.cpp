@@ -6,6 +6,7 @@
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/language.h"
+#include "view/graph_panel.h"
 #include "view/main_window.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
@@ -15,6 +16,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QHash>
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -132,6 +134,7 @@ private slots:
     void germanWindowHasGermanMenus();
     void spanishWindowHasSpanishMenus();
     void newerMenusSpeakTheLanguage();
+    void graphQuantitiesSpeakTheLanguage();
     void menuLettersAreUniqueInEachMenu();
     void englishNeedsNoTranslation();
     void numbersFollowTheLocaleButSceneFilesDoNot();
@@ -210,6 +213,36 @@ void LanguageTest::newerMenusSpeakTheLanguage()
         const QStringList viewEntries = menuEntries(window, QString::fromUtf8(language.view));
         for (const char* entry : language.viewEntries)
             QVERIFY2(viewEntries.contains(QString::fromUtf8(entry)), qPrintable(viewEntries.join(QLatin1Char('|'))));
+    }
+}
+
+// The graph's quantity boxes and its axis titles (GraphQuantity's labels, translated outside any
+// class) are in the window's language too.
+void LanguageTest::graphQuantitiesSpeakTheLanguage()
+{
+    // An aggregate, so that the lists live as long as the array (in a std::pair they would not).
+    struct Expected {
+        const char* code;
+        std::initializer_list<const char*> labels;
+    };
+    const Expected languages[] = {
+        {"de", {"Geschwindigkeit (m/s)", "kinetische Energie (J)", "Drehimpuls der Welt (kg·m²/s)"}},
+        {"es", {"rapidez (m/s)", "energía cinética (J)", "momento angular del mundo (kg·m²/s)"}},
+    };
+    for (const auto& [code, labels] : languages) {
+        QVERIFY(startIn(QString::fromLatin1(code)));
+        MainWindow window;
+        window.setScene(ballWorld(), QStringLiteral("ball"));
+        window.newGraphAction()->trigger();
+        QCOMPARE(window.graphPanels().size(), std::size_t{1});
+        auto* yBox = window.graphPanels().front()->findChild<QComboBox*>(QStringLiteral("graphY"));
+        QVERIFY(yBox);
+        QStringList items;
+        for (int i = 0; i < yBox->count(); ++i)
+            items << yBox->itemText(i);
+        for (const char* label : labels)
+            QVERIFY2(items.contains(QString::fromUtf8(label)), qPrintable(items.join(QLatin1Char('|'))));
+        QVERIFY(!items.contains(QStringLiteral("speed (m/s)")));
     }
 }
 
