@@ -134,6 +134,7 @@ private slots:
     void protractorReadsTheAngle();
     void probeFollowsAFallingBall();
     void velocityVectorsOfOneBodyFromThePane();
+    void accelerationForceAndMomentumArrowsPointAlongTheirVectors();
     void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
@@ -690,6 +691,66 @@ void InstrumentsTest::velocityVectorsOfOneBodyFromThePane()
     QTest::mouseClick(velocity, Qt::LeftButton, Qt::NoModifier, QPoint(half, half));
     QVERIFY(!canvas.instruments().showsBodyVector("ball", VectorKind::Velocity));
     QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0);
+}
+
+// View › Acceleration, Net Force and Momentum, as a user toggles them: each arrow is found in a
+// grab, in its own colour, below a ½ kg ball falling freely (a = g, F = m·g, p = m·v all point
+// down), as long as the legend's scale makes it, and it goes when toggled off.
+void InstrumentsTest::accelerationForceAndMomentumArrowsPointAlongTheirVectors()
+{
+    model::World world;
+    world.settings.gravity = impetus::Vec2(0, -9.81);
+    model::Body ball = test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 10));
+    ball.massSpec = {model::MassMode::Mass, 0.5};
+    ball.updateDerived();
+    world.bodies.push_back(ball);
+    // Two fixed markers that frame the view, well away from the arrows.
+    world.bodies.push_back(test::makeBody("left", model::Box{0.2, 0.2}, impetus::Vec2(-3, 5), true));
+    world.bodies.push_back(test::makeBody("right", model::Box{0.2, 0.2}, impetus::Vec2(3, 11), true));
+    MainWindow window;
+    window.setScene(world, QStringLiteral("falling"));
+    QVERIFY(showActive(window));
+    window.runner().stepBy(120); // half a second of fall: v = −4.905 m/s, p = −2.4525 kg·m/s
+    impetus::view::CanvasView& canvas = window.canvas();
+    const model::Body& now = window.runner().world().bodies[0];
+    QVERIFY(std::abs(now.state.velocity.y() + 4.905) < 1e-9);
+
+    struct Arrow {
+        VectorKind kind;
+        QColor colour;
+        double lengthM; // the arrow's length on the canvas, m
+    };
+    const Arrow arrows[] = {
+        {VectorKind::Acceleration, constants::kAccelerationColor, 9.81 * constants::kDefaultAccelerationScale},
+        {VectorKind::NetForce, constants::kNetForceColor, 0.5 * 9.81 * constants::kDefaultForceScale},
+        {VectorKind::Momentum, constants::kMomentumColor, 0.5 * 4.905 * constants::kDefaultMomentumScale},
+    };
+    for (const Arrow& arrow : arrows) {
+        const QPointF centre = canvas.toView(QPointF(now.state.position.x(), now.state.position.y()));
+        const double lengthPx = arrow.lengthM * canvas.pixelsPerMetre();
+        const int reach = static_cast<int>(lengthPx) + 20;
+        const QRect around(centre.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
+        QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
+        window.vectorAction(arrow.kind)->trigger();
+        QVERIFY(canvas.instruments().showsVector(arrow.kind));
+        QPoint centroid;
+        const int pixels = pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, &centroid, around);
+        const QString what = QStringLiteral("kind %1: %2 px, centroid (%3, %4), ball (%5, %6), length %7 px")
+                                 .arg(static_cast<int>(arrow.kind))
+                                 .arg(pixels)
+                                 .arg(centroid.x())
+                                 .arg(centroid.y())
+                                 .arg(centre.x())
+                                 .arg(centre.y())
+                                 .arg(lengthPx);
+        QVERIFY2(pixels > lengthPx, qPrintable(what));
+        // Straight down from the ball (screen y grows downwards), about half its length below.
+        QVERIFY2(std::abs(centroid.x() - centre.x()) < 0.15 * lengthPx, qPrintable(what));
+        QVERIFY2(centroid.y() > centre.y() + 0.3 * lengthPx && centroid.y() < centre.y() + 0.8 * lengthPx,
+                 qPrintable(what));
+        window.vectorAction(arrow.kind)->trigger();
+        QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
+    }
 }
 
 void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()
