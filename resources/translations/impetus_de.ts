@@ -223,7 +223,7 @@
     </message>
     <message>
         <source>p = (%1, %2) kg·m/s</source>
-        <translation>p = (%1, %2) kg·m/s</translation>
+        <translation>p = (%1; %2) kg·m/s</translation>
     </message>
     <message>
         <source>K = %1 J, U = %2 J, K + U = %3 J</source>
@@ -701,7 +701,7 @@
     </message>
     <message>
         <source>%1 = %2, %3 = %4</source>
-        <translation>%1 = %2, %3 = %4</translation>
+        <translation>%1 = %2; %3 = %4</translation>
     </message>
     <message>
         <source>Cannot write “%1”: %2</source>
@@ -875,7 +875,7 @@
     </message>
     <message>
         <source>, </source>
-        <translation>, </translation>
+        <translation>; </translation>
     </message>
     <message>
         <source>Integrator Ghosts</source>

@@ -4,6 +4,7 @@
 #include "view/view_constants.h"
 
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QPainter>
 #include <QPolygonF>
 #include <QVector>
@@ -485,7 +486,7 @@ QStringList CanvasInstruments::legendLines() const
 {
     QStringList lines;
     const auto scaleText = [&](VectorKind kind) {
-        return tr("1 %1 = %2 m").arg(unitOf(kind)).arg(vectorScale(kind), 0, 'g', 3);
+        return tr("1 %1 = %2 m").arg(unitOf(kind), QLocale().toString(vectorScale(kind), 'g', 3));
     };
     if (drawsKindAnywhere(VectorKind::Velocity))
         lines << tr("velocity: %1").arg(scaleText(VectorKind::Velocity));

@@ -38,6 +38,8 @@ EnergyLedgerChart::EnergyLedgerChart(QWidget* parent)
     setObjectName(QStringLiteral("energyLedgerChart"));
     m_chart = new QChart;
     m_chart->legend()->setAlignment(Qt::AlignRight);
+    // The axes' numbers in the window's format ("0,5" in German), as the readout below them.
+    m_chart->setLocalizeNumbers(true);
     m_timeAxis = new QValueAxis(m_chart);
     m_timeAxis->setTitleText(tr("time (s)"));
     m_energyAxis = new QValueAxis(m_chart);

@@ -45,6 +45,9 @@ constexpr double kRangeMarginFraction = 0.05;
 /// A constant quantity (a body at rest) gets an axis at least this far each side of its value,
 /// in its own unit.
 constexpr double kFlatRangeMargin = 0.5;
+/// Significant digits of the value under the cursor: enough to tell two steps of a long run apart
+/// (t = 12.345678 s at 1/240 s a step).
+constexpr int kReadoutDigits = 8;
 
 /// A number as impetus-cli writes it: the shortest text that reads back to the same double.
 QString csvNumber(double value) { return QString::number(value, 'g', QLocale::FloatingPointShortest); }
@@ -120,6 +123,8 @@ GraphPanel::GraphPanel(const SimulationRunner& runner, const QString& bodyName, 
     m_xBox->setCurrentIndex(m_xBox->findData(static_cast<int>(m_x)));
 
     m_chart->legend()->hide();
+    // The axes' numbers in the window's format too ("0,5" in German), as the readout under them.
+    m_chart->setLocalizeNumbers(true);
     m_chart->addSeries(m_series);
     m_chart->addSeries(m_marker);
     m_chart->addAxis(m_axisX, Qt::AlignBottom);
@@ -385,11 +390,11 @@ bool GraphPanel::eventFilter(QObject* watched, QEvent* event)
         const auto nearest = std::ranges::min_element(m_records, {}, [&](const GraphRecord& r) {
             return std::abs(valueOf(m_x, r) - value.x());
         });
+        // In the window's number format ("0,25" in German); the CSV keeps the decimal point.
+        const QLocale locale;
         m_readout->setText(tr("%1 = %2, %3 = %4")
-                               .arg(csvColumn(m_x))
-                               .arg(valueOf(m_x, *nearest), 0, 'g', 8)
-                               .arg(csvColumn(m_y))
-                               .arg(valueOf(m_y, *nearest), 0, 'g', 8));
+                               .arg(csvColumn(m_x), locale.toString(valueOf(m_x, *nearest), 'g', kReadoutDigits),
+                                    csvColumn(m_y), locale.toString(valueOf(m_y, *nearest), 'g', kReadoutDigits)));
     }
     return QWidget::eventFilter(watched, event);
 }

@@ -12,6 +12,7 @@
 #include <QGraphicsObject>
 #include <QGraphicsScene>
 #include <QLabel>
+#include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
 #include <QTimer>
@@ -184,7 +185,8 @@ QString formatTimeStep(double h)
     // A step the slider offers (1/240 s) reads best as a fraction; anything else in milliseconds.
     if (std::abs(perSecond - std::round(perSecond)) < 1e-6 * perSecond)
         return QCoreApplication::translate("impetus::view::IntegratorGhosts", "1/%1 s").arg(std::lround(perSecond));
-    return QCoreApplication::translate("impetus::view::IntegratorGhosts", "%1 ms").arg(h * 1000, 0, 'g', 4);
+    return QCoreApplication::translate("impetus::view::IntegratorGhosts", "%1 ms")
+        .arg(QLocale().toString(h * 1000, 'g', 4));
 }
 
 IntegratorGhosts::IntegratorGhosts(CanvasView& canvas, const SimulationRunner& runner, Timeline& timeline,

@@ -20,6 +20,7 @@
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QLocale>
 #include <QLogValueAxis>
 #include <QMenu>
 #include <QPen>
@@ -169,7 +170,8 @@ IntegratorGhostsPanel::IntegratorGhostsPanel(IntegratorGhosts& ghosts, QWidget* 
     layout->addLayout(stepRow);
 
     m_chart = new QChart;
-    m_chart->setTitle(tr("Largest position error in %1 s against the time step").arg(constants::kGhostErrorRunSeconds));
+    m_chart->setTitle(tr("Largest position error in %1 s against the time step")
+                          .arg(QLocale().toString(constants::kGhostErrorRunSeconds)));
     m_axisH = new QLogValueAxis;
     m_axisH->setTitleText(tr("time step h (s)"));
     m_axisH->setLabelFormat(QStringLiteral("%.0e"));
@@ -270,18 +272,21 @@ void IntegratorGhostsPanel::onRestarted()
 void IntegratorGhostsPanel::updateReadout()
 {
     const controller::IntegratorComparison* comparison = m_ghosts.comparison();
+    // In the window's number format ("0,25" in German), as the status bar.
+    const QLocale locale;
     for (std::size_t i = 0; i < kIntegratorCount; ++i) {
         QString energy;
         QString position;
         if (comparison && comparison->diverged(i)) {
-            energy = tr("diverged at t = %1 s").arg(comparison->world(i).time - comparison->start().time, 0, 'f', 3);
+            energy = tr("diverged at t = %1 s")
+                         .arg(locale.toString(comparison->world(i).time - comparison->start().time, 'f', 3));
             position = tr("diverged");
         } else if (comparison) {
-            energy = tr("%1 %").arg(kPercent * comparison->energyError(i), 0, 'g', kReadoutDigits);
+            energy = tr("%1 %").arg(locale.toString(kPercent * comparison->energyError(i), 'g', kReadoutDigits));
             if (comparison->energyError(i) > 0)
                 energy.prepend(QLatin1Char('+'));
             if (const std::optional<Scalar> error = comparison->positionError(i))
-                position = tr("%1 mm").arg(kMillimetres * *error, 0, 'g', kReadoutDigits);
+                position = tr("%1 mm").arg(locale.toString(kMillimetres * *error, 'g', kReadoutDigits));
             else if (comparison->analytic() != controller::AnalyticKind::None)
                 position = tr("no analytic solution after a contact");
             else
@@ -293,10 +298,9 @@ void IntegratorGhostsPanel::updateReadout()
     if (comparison) {
         const double t = static_cast<double>(m_ghosts.steps()) * m_ghosts.timeStep();
         m_clock->setText(tr("Ghosts at t = %1 s after their start: n = %2 steps of h = %3%4")
-                             .arg(t, 0, 'f', 3)
-                             .arg(m_ghosts.steps())
-                             .arg(formatTimeStep(m_ghosts.timeStep()))
-                             .arg(m_ghosts.caughtUp() ? QString() : tr(" (catching up)")));
+                             .arg(locale.toString(t, 'f', 3), locale.toString(m_ghosts.steps()),
+                                  formatTimeStep(m_ghosts.timeStep()),
+                                  m_ghosts.caughtUp() ? QString() : tr(" (catching up)")));
     } else {
         m_clock->clear();
     }
@@ -328,7 +332,7 @@ void IntegratorGhostsPanel::replot(const model::World& start)
         m_lines[i]->replace(points);
         m_slopes[i] = logLogSlope(hs, es);
         if (m_slopes[i]) {
-            slopes << tr("%1 %2").arg(ghostIntegratorName(i)).arg(*m_slopes[i], 0, 'f', 2);
+            slopes << tr("%1 %2").arg(ghostIntegratorName(i), QLocale().toString(*m_slopes[i], 'f', 2));
         } else if (!errors.empty()) {
             slopes << tr("%1 exact to rounding").arg(ghostIntegratorName(i));
         }

@@ -33,6 +33,7 @@
 #include <QIcon>
 #include <QKeySequence>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -559,7 +560,7 @@ void MainWindow::createToolBars()
     m_speedBox->setToolTip(tr("Simulated seconds per real second"));
     m_speedBox->setFocusPolicy(Qt::ClickFocus);
     for (const double speed : kSpeeds)
-        m_speedBox->addItem(tr("%1×").arg(speed), speed);
+        m_speedBox->addItem(tr("%1×").arg(QLocale().toString(speed)), speed);
     m_speedBox->setCurrentIndex(kRealTimeSpeedIndex);
     speedLabel->setBuddy(m_speedBox);
     connect(m_speedBox, &QComboBox::currentIndexChanged, this,
@@ -757,8 +758,7 @@ void MainWindow::showDivergence(const QString& bodyName, double time)
     // a nested event loop there would only invite more ticks.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("The simulation blew up"),
                                 tr("Body “%1” got a position or velocity that is not a finite number by t = %2 s.")
-                                    .arg(bodyName)
-                                    .arg(time, 0, 'g', 6),
+                                    .arg(bodyName, QLocale().toString(time, 'g', 6)),
                                 QMessageBox::Ok, this);
     box->setObjectName(QStringLiteral("divergedBox"));
     box->setInformativeText(tr("The run stopped at the last finite state. The time step is too large for the "
@@ -921,25 +921,23 @@ void MainWindow::compareSelectedWithRigid()
     QApplication::restoreOverrideCursor();
     statusBar()->clearMessage();
 
+    // In the window's number format ("0,25" in German), as the status bar.
+    const QLocale locale;
     QString table = tr("<table><tr><th align=right>t (s)</th><th align=right>distance (m)</th></tr>");
     for (const controller::RigidSoftSample& sample : result.samples)
         table += QStringLiteral("<tr><td align=right>%1</td><td align=right>%2</td></tr>")
-                     .arg(sample.time - world.time, 0, 'f', 2)
-                     .arg(sample.distance, 0, 'f', 4);
+                     .arg(locale.toString(sample.time - world.time, 'f', 2), locale.toString(sample.distance, 'f', 4));
     table += QStringLiteral("</table>");
     QMessageBox box(QMessageBox::Information, tr("Soft against rigid"), QString(), QMessageBox::Ok, this);
     box.setObjectName(QStringLiteral("compareRigidBox"));
     box.setTextFormat(Qt::RichText);
     box.setText(tr("<p>How far the centre of mass of <b>%1</b> run soft (%2 ellipses, %3 per m²) drifts from "
                    "the same body run rigid, over the next %4 s:</p><p>RMS %5 m, largest %6 m at t = %7 s.</p>%8")
-                    .arg(QString::fromStdString(world.body(id).name).toHtmlEscaped())
-                    .arg(result.ellipses)
-                    .arg(result.ellipsesPerSquareMeter, 0, 'g', 4)
-                    .arg(constants::kCompareRigidSeconds, 0, 'g', 3)
-                    .arg(result.rmsDistance, 0, 'f', 4)
-                    .arg(result.maxDistance, 0, 'f', 4)
-                    .arg(result.maxDistanceTime - world.time, 0, 'f', 2)
-                    .arg(table));
+                    .arg(QString::fromStdString(world.body(id).name).toHtmlEscaped(), locale.toString(result.ellipses),
+                         locale.toString(result.ellipsesPerSquareMeter, 'g', 4),
+                         locale.toString(constants::kCompareRigidSeconds, 'g', 3),
+                         locale.toString(result.rmsDistance, 'f', 4), locale.toString(result.maxDistance, 'f', 4),
+                         locale.toString(result.maxDistanceTime - world.time, 'f', 2), table));
     m_lastComparison = result;
     box.exec();
 }

@@ -2,6 +2,7 @@
 
 #include "view/simulation_runner.h"
 
+#include <QLocale>
 #include <QStringList>
 
 #include <algorithm>
@@ -20,10 +21,19 @@ constexpr double kMsPerSecond = 1000.0;
 /// the measurement is good to a few per cent, so more digits would only flicker.
 constexpr int kSpeedDigits = 2;
 constexpr int kTimeDigits = 3;
+/// Decimals of the seconds a step has been computing for ("1.5 s").
+constexpr int kBusyDecimals = 1;
 
-QString speedText(double speed) { return QString::number(speed, 'g', kSpeedDigits); }
+// The numbers below are in the window's number format ("0,055" in German), as the status bar's.
 
-QString msText(double seconds) { return QString::number(seconds * kMsPerSecond, 'g', kTimeDigits); }
+QString speedText(double speed) { return QLocale().toString(speed, 'g', kSpeedDigits); }
+
+/// The speed asked for, as the speed box offers it ("0.25").
+QString requestedSpeedText(double speed) { return QLocale().toString(speed); }
+
+QString msText(double seconds) { return QLocale().toString(seconds * kMsPerSecond, 'g', kTimeDigits); }
+
+QString busyText(double seconds) { return QLocale().toString(seconds, 'f', kBusyDecimals); }
 
 } // namespace
 
@@ -50,7 +60,8 @@ void PaceIndicator::refresh()
         // The speed box offers 1× exactly, so this compares with the value it set.
         setText(pace.requestedSpeed == kRealTime
                     ? tr("Running at %1× real time").arg(reached)
-                    : tr("Running at %1× real time (speed set to %2×)").arg(reached, QString::number(pace.requestedSpeed)));
+                    : tr("Running at %1× real time (speed set to %2×)")
+                          .arg(reached, requestedSpeedText(pace.requestedSpeed)));
     } else {
         hide();
         return;
@@ -68,32 +79,32 @@ QString PaceIndicator::reason(const RunPace& pace, bool running) const
     const double budget = pace.timeStep / pace.requestedSpeed;
     if (running) {
         lines << tr("Simulated time runs at %1× real time, slower than the %2× asked for.")
-                     .arg(speedText(pace.achievedSpeed), QString::number(pace.requestedSpeed));
+                     .arg(speedText(pace.achievedSpeed), requestedSpeedText(pace.requestedSpeed));
     } else {
         lines << tr("Step (→) is computing one time step in the background. The canvas shows it when it is "
                     "done; the window keeps working meanwhile.");
     }
     if (!pace.costKnown) {
         lines << tr("No step has been computed yet; the first one has taken %1 s so far.")
-                     .arg(pace.busySeconds, 0, 'f', 1);
+                     .arg(busyText(pace.busySeconds));
     } else {
         if (running) {
             lines << tr("One step (%1 ms of simulated time) takes %2 ms to compute; at %3× it may take at most %4 ms.")
                          .arg(msText(pace.timeStep), msText(pace.wallSecondsPerStep),
-                              QString::number(pace.requestedSpeed), msText(budget));
+                              requestedSpeedText(pace.requestedSpeed), msText(budget));
         } else {
             lines << tr("The last step took %1 ms to compute.").arg(msText(pace.wallSecondsPerStep));
         }
         if (pace.busySeconds > std::max(pace.wallSecondsPerStep, budget)) {
-            lines << tr("The steps being computed now have taken %1 s so far.").arg(pace.busySeconds, 0, 'f', 1);
+            lines << tr("The steps being computed now have taken %1 s so far.").arg(busyText(pace.busySeconds));
         }
         lines << tr("The last step — bodies: %1, contacts: %2, impacts: %3. Solving the contacts and joints took "
                     "%4 ms of its %5 ms.")
                      .arg(m_runner.world().bodies.size())
                      .arg(pace.profile.contacts)
                      .arg(pace.profile.impacts)
-                     .arg(QString::number(pace.profile.solveMs, 'g', kTimeDigits),
-                          QString::number(pace.profile.totalMs, 'g', kTimeDigits));
+                     .arg(QLocale().toString(pace.profile.solveMs, 'g', kTimeDigits),
+                          QLocale().toString(pace.profile.totalMs, 'g', kTimeDigits));
         if (pace.stability.substeps > 1) {
             lines << tr("Soft bodies split each step into %1 substeps. %2")
                          .arg(pace.stability.substeps)

@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QToolButton>
@@ -83,7 +84,9 @@ void TimelineBar::update()
     // The run's end in time: the step count times the step, measured from the time shown, so that
     // a time step changed along the way does not show a run that ends before now.
     const double end = shown + static_cast<double>(m_timeline.lastStep() - m_timeline.currentStep()) * dt;
-    m_label->setText(tr("t = %1 s of %2 s").arg(shown, 0, 'f', 3).arg(end, 0, 'f', 3));
+    // In the window's number format ("0,500" in German), as the status bar's time.
+    const QLocale locale;
+    m_label->setText(tr("t = %1 s of %2 s").arg(locale.toString(shown, 'f', 3), locale.toString(end, 'f', 3)));
 }
 
 } // namespace impetus::view

@@ -5,15 +5,22 @@
 #include "model/scene_io.h"
 #include "test_settings.h"
 #include "test_worlds.h"
+#include "view/canvas_instruments.h"
+#include "view/canvas_view.h"
 #include "view/language.h"
 #include "view/graph_panel.h"
+#include "view/graph_quantity.h"
 #include "view/main_window.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
+#include "view/tools/measure_tools.h"
+#include "view/tools/probe_tool.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QChart>
+#include <QChartView>
 #include <QFile>
 #include <QHash>
 #include <QComboBox>
@@ -21,11 +28,14 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
 
+#include <cmath>
 #include <initializer_list>
 #include <variant>
 
@@ -114,6 +124,27 @@ model::World ballWorld()
     return world;
 }
 
+/// No gravity; a ball of radius 0.1 m at the origin moving right at 2 m/s, and a fixed 0.2 m box at
+/// (2, 1) m for the ruler to snap to.
+model::World movingBallWorld()
+{
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body ball = test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 0));
+    ball.state.velocity = impetus::Vec2(2, 0);
+    world.bodies.push_back(ball);
+    world.bodies.push_back(test::makeBody("marker", model::Box{0.2, 0.2}, impetus::Vec2(2, 1), true));
+    return world;
+}
+
+/// True when `text` has a number with a decimal point in it ("0.500"), which a German window
+/// should not show.
+bool hasDecimalPoint(const QString& text)
+{
+    static const QRegularExpression point(QStringLiteral("[0-9]\\.[0-9]"));
+    return point.match(text).hasMatch();
+}
+
 /// Selects everything in `edit`, types `text` and presses Enter, as a user would.
 void typeAndEnter(QLineEdit* edit, const QString& text)
 {
@@ -138,6 +169,7 @@ private slots:
     void menuLettersAreUniqueInEachMenu();
     void englishNeedsNoTranslation();
     void numbersFollowTheLocaleButSceneFilesDoNot();
+    void readoutsFollowTheLocale();
     void languageMenuKeepsTheChoiceForTheNextStart();
     void unknownLanguageSettingMeansTheSystemLanguage();
 
@@ -305,6 +337,93 @@ void LanguageTest::numbersFollowTheLocaleButSceneFilesDoNot()
     const model::SceneLoadResult loaded = model::loadSceneFile(path.toStdString());
     QVERIFY(loaded.ok());
     QCOMPARE(std::get<model::Circle>(loaded.world->bodies[0].shape).radius, 0.25);
+}
+
+// What a user reads off the window while measuring (the timeline, the probe's label, the ruler, the
+// graph under the cursor, the vector legend) writes a decimal comma in German, as the pane does.
+void LanguageTest::readoutsFollowTheLocale()
+{
+    QVERIFY(startIn(QStringLiteral("de")));
+    MainWindow window;
+    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.resize(1200, 750);
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+
+    // The ruler, from the ball's centre to the marker's top-right corner.
+    QTest::keyClick(viewport, Qt::Key_M);
+    auto* ruler = dynamic_cast<view::RulerTool*>(canvas.tool());
+    QVERIFY(ruler);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QTest::mouseMove(viewport, canvas.toView(QPointF(1, 0.5)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(2.1, 1.1)).toPoint());
+    QCOMPARE(ruler->text(), QStringLiteral("2,371 m"));
+    QTest::keyClick(viewport, Qt::Key_Escape);
+
+    // A graph of the ball's x against time, and its probe, before half a second of run.
+    window.document().setSelection(view::Selection{{0}, {}, {}});
+    window.newGraphAction()->trigger();
+    QCOMPARE(window.graphPanels().size(), std::size_t{1});
+    view::GraphPanel* graph = window.graphPanels().front();
+    auto* yBox = graph->findChild<QComboBox*>(QStringLiteral("graphY"));
+    QVERIFY(yBox);
+    const int x = yBox->findData(static_cast<int>(view::GraphQuantity::X));
+    QVERIFY(x >= 0);
+    yBox->setCurrentIndex(x);
+    emit yBox->activated(x);
+    QTest::keyClick(viewport, Qt::Key_I);
+    auto* probe = dynamic_cast<view::ProbeTool*>(canvas.tool());
+    QVERIFY(probe);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(0, 0)).toPoint());
+    QVERIFY(probe->body().has_value());
+    window.runner().stepBy(120);
+    QCOMPARE(window.runner().world().stepCount, std::int64_t{120});
+
+    auto* timeline = window.findChild<QLabel*>(QStringLiteral("timelineLabel"));
+    QVERIFY(timeline);
+    QCOMPARE(timeline->text(), QStringLiteral("t = 0,500 s von 0,500 s"));
+
+    const QStringList probeLines = probe->text().split(QLatin1Char('\n'));
+    QVERIFY2(probeLines.contains(QStringLiteral("x = 1,000 m, y = 0,000 m")), qPrintable(probe->text()));
+    QVERIFY2(probeLines.contains(QStringLiteral("vx = 2,000 m/s, vy = 0,000 m/s")), qPrintable(probe->text()));
+    QVERIFY2(!hasDecimalPoint(probe->text()), qPrintable(probe->text()));
+
+    // Hovered halfway along the run, the graph reads the time and x of the step under the cursor,
+    // with decimal commas and a semicolon between the two.
+    QChartView* chartView = graph->chartView();
+    QChart* chart = chartView->chart();
+    auto* timeAxis = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).front());
+    QVERIFY(timeAxis);
+    QTRY_VERIFY(chartView->isVisible() && !chart->plotArea().isEmpty() && timeAxis->max() >= 0.5);
+    const QPointF middle = chart->mapToPosition(QPointF(0.25, 0.5), chart->series().front());
+    QTest::mouseMove(chartView->viewport(), chartView->mapFromScene(middle));
+    auto* readout = graph->findChild<QLabel*>(QStringLiteral("graphReadout"));
+    QVERIFY(readout);
+    static const QRegularExpression hovered(QStringLiteral("^time = 0,[0-9]+; x = 0,[0-9]+$"));
+    QVERIFY2(hovered.match(readout->text()).hasMatch(), qPrintable(readout->text()));
+    // The CSV it exports keeps the decimal point: its commas separate the columns.
+    QTemporaryDir dir;
+    const QString csvPath = dir.filePath(QStringLiteral("ball.csv"));
+    QVERIFY(!graph->exportCsv(csvPath));
+    QFile csv(csvPath);
+    QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList rows = QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(rows.size(), 122); // the header and steps 0 to 120
+    const QStringList last = rows.last().split(QLatin1Char(','));
+    QCOMPARE(last.size(), 3);
+    bool timeRead = false;
+    bool xRead = false;
+    QVERIFY2(std::abs(QLocale::c().toDouble(last[0], &timeRead) - 0.5) < 1e-9 && timeRead, qPrintable(rows.last()));
+    QVERIFY2(std::abs(QLocale::c().toDouble(last[2], &xRead) - 1.0) < 1e-9 && xRead, qPrintable(rows.last()));
+
+    // The vector legend gives its scale with a comma too.
+    window.vectorAction(view::VectorKind::Velocity)->trigger();
+    const QStringList legend = canvas.instruments().legendLines();
+    QCOMPARE(legend.size(), 1);
+    QVERIFY2(legend.front().endsWith(QStringLiteral("1 m/s = 0,25 m")), qPrintable(legend.front()));
 }
 
 void LanguageTest::languageMenuKeepsTheChoiceForTheNextStart()

@@ -8,6 +8,7 @@
 #include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QLineF>
+#include <QLocale>
 #include <QPainter>
 
 #include <cmath>
@@ -23,6 +24,12 @@ constexpr double kArcHeads = 3;
 const QColor kLabelFill(255, 255, 255, 230);
 /// Space between the ruler's two labels, px.
 constexpr double kLabelGapPx = 4;
+/// Decimals of the ruler's lengths (mm) and of the protractor's angles (tenths of a degree).
+constexpr int kLengthDecimals = 3;
+constexpr int kAngleDecimals = 1;
+
+/// `value` with `decimals` decimals in the window's number format ("2,371" in German).
+QString measureNumber(double value, int decimals) { return QLocale().toString(value, 'f', decimals); }
 
 /// Draws `text` on a light box centred at the pixel point `at`.
 void drawLabel(QPainter& painter, const QPointF& at, const QString& text)
@@ -145,7 +152,7 @@ std::optional<double> RulerTool::distance() const
 QString RulerTool::text() const
 {
     const std::optional<double> d = distance();
-    return d ? tr("%1 m").arg(*d, 0, 'f', 3) : QString();
+    return d ? tr("%1 m").arg(measureNumber(*d, kLengthDecimals)) : QString();
 }
 
 void RulerTool::paintOverlay(QPainter& painter, double) const
@@ -166,10 +173,10 @@ void RulerTool::paintOverlay(QPainter& painter, double) const
     const QPointF tick = (across.p2() - across.p1()) * constants::kArrowHeadPx / 2;
     painter.drawLine(a - tick, a + tick);
     painter.drawLine(b - tick, b + tick);
-    const QString label = tr("%1 m").arg(QLineF(*m_start, *m_end).length(), 0, 'f', 3);
+    const QString label = tr("%1 m").arg(measureNumber(QLineF(*m_start, *m_end).length(), kLengthDecimals));
     const QString parts = tr("Δx = %1 m, Δy = %2 m")
-                              .arg(m_end->x() - m_start->x(), 0, 'f', 3)
-                              .arg(m_end->y() - m_start->y(), 0, 'f', 3);
+                              .arg(measureNumber(m_end->x() - m_start->x(), kLengthDecimals),
+                                   measureNumber(m_end->y() - m_start->y(), kLengthDecimals));
     drawLabel(painter, (a + b) / 2, label);
     drawLabel(painter, (a + b) / 2 + QPointF(0, QFontMetricsF(painter.font()).height() + kLabelGapPx), parts);
     painter.restore();
@@ -232,7 +239,7 @@ std::optional<double> ProtractorTool::angleDegrees() const
 QString ProtractorTool::text() const
 {
     const std::optional<double> angle = angleDegrees();
-    return angle ? tr("%1°").arg(*angle, 0, 'f', 1) : QString();
+    return angle ? tr("%1°").arg(measureNumber(*angle, kAngleDecimals)) : QString();
 }
 
 void ProtractorTool::paintOverlay(QPainter& painter, double) const

@@ -7,6 +7,7 @@
 #include "view/view_constants.h"
 
 #include <QKeyEvent>
+#include <QLocale>
 #include <QPainter>
 #include <QStringList>
 
@@ -27,11 +28,12 @@ constexpr double kCentreRingPx = 4.0;
 /// Decimals of the readout's numbers: mm, mm/s, mJ, as the status bar shows them.
 constexpr int kDecimals = 3;
 
-/// `value` with kDecimals decimals, and a value that rounds to zero as "0.000", never "-0.000".
+/// `value` with kDecimals decimals in the window's number format ("0,250" in German), and a value
+/// that rounds to zero as "0.000", never "-0.000".
 QString number(double value)
 {
     const double halfLastDigit = 0.5 * std::pow(10.0, -kDecimals);
-    return QString::number(std::abs(value) < halfLastDigit ? 0.0 : value, 'f', kDecimals);
+    return QLocale().toString(std::abs(value) < halfLastDigit ? 0.0 : value, 'f', kDecimals);
 }
 
 } // namespace
@@ -97,7 +99,7 @@ QString ProbeTool::text() const
     lines << tr("speed = %1 m/s").arg(number(r->speed));
     lines << tr("angle = %1 rad (%2°), ω = %3 rad/s")
                  .arg(number(r->angle))
-                 .arg(r->angle * 180 / std::numbers::pi, 0, 'f', 1)
+                 .arg(QLocale().toString(r->angle * 180 / std::numbers::pi, 'f', 1))
                  .arg(number(r->angularVelocity));
     lines << tr("p = (%1, %2) kg·m/s").arg(number(r->momentum.x()), number(r->momentum.y()));
     lines << tr("K = %1 J, U = %2 J, K + U = %3 J")
