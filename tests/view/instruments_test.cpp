@@ -77,19 +77,6 @@ int pixelsNear(const QImage& image, const QColor& colour, QPoint* centroid = nul
     return count;
 }
 
-/// No gravity, a ball at the origin moving to the right at 2 m/s and a fixed marker that frames
-/// the view around it.
-model::World movingBallWorld()
-{
-    model::World world;
-    world.settings.gravity = impetus::Vec2::Zero();
-    model::Body ball = test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 0));
-    ball.state.velocity = impetus::Vec2(2, 0);
-    world.bodies.push_back(ball);
-    world.bodies.push_back(test::makeBody("marker", model::Box{0.2, 0.2}, impetus::Vec2(2, 1), true));
-    return world;
-}
-
 /// A ball falling freely from (0, 10) m, with nothing to hit.
 model::World fallingBallWorld()
 {
@@ -153,7 +140,7 @@ bool InstrumentsTest::showActive(MainWindow& window)
 void InstrumentsTest::velocityVectorsAppearInTheGrab()
 {
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     QVERIFY(showActive(window));
     impetus::view::CanvasView& canvas = window.canvas();
     const QImage before = canvas.viewport()->grab().toImage();
@@ -196,7 +183,7 @@ void InstrumentsTest::velocityVectorsAppearInTheGrab()
 void InstrumentsTest::legendGivesTheScaleAndItCanBeChanged()
 {
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     QVERIFY(showActive(window));
     CanvasInstruments& instruments = window.canvas().instruments();
     QVERIFY(instruments.legendLines().isEmpty());
@@ -243,7 +230,7 @@ void InstrumentsTest::forceArrowsOfABoxOnTheFloorComeFromTheEngine()
 void InstrumentsTest::trailsHaveDotsAndFollowTheTimeline()
 {
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     QVERIFY(showActive(window));
     window.trailsAction()->trigger();
     CanvasInstruments& instruments = window.canvas().instruments();
@@ -495,7 +482,7 @@ void InstrumentsTest::pendulumPeriodReadOffTheGraphToAMillisecond()
 void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
 {
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     QVERIFY(showActive(window));
     impetus::view::CanvasView& canvas = window.canvas();
     QWidget* viewport = canvas.viewport();
@@ -524,7 +511,7 @@ void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
 void InstrumentsTest::protractorReadsTheAngle()
 {
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     QVERIFY(showActive(window));
     impetus::view::CanvasView& canvas = window.canvas();
     QWidget* viewport = canvas.viewport();
@@ -631,7 +618,7 @@ void InstrumentsTest::probeFollowsAFallingBall()
 void InstrumentsTest::velocityVectorsOfOneBodyFromThePane()
 {
     // Two balls moving alike, one above the other, no gravity.
-    model::World world = movingBallWorld();
+    model::World world = test::movingBallWorld();
     model::Body upper = test::makeBody("upper", model::Circle{0.1}, impetus::Vec2(0, 1.5));
     upper.state.velocity = impetus::Vec2(2, 0);
     world.bodies.push_back(upper);

@@ -124,19 +124,6 @@ model::World ballWorld()
     return world;
 }
 
-/// No gravity; a ball of radius 0.1 m at the origin moving right at 2 m/s, and a fixed 0.2 m box at
-/// (2, 1) m for the ruler to snap to.
-model::World movingBallWorld()
-{
-    model::World world;
-    world.settings.gravity = impetus::Vec2::Zero();
-    model::Body ball = test::makeBody("ball", model::Circle{0.1}, impetus::Vec2(0, 0));
-    ball.state.velocity = impetus::Vec2(2, 0);
-    world.bodies.push_back(ball);
-    world.bodies.push_back(test::makeBody("marker", model::Box{0.2, 0.2}, impetus::Vec2(2, 1), true));
-    return world;
-}
-
 /// True when `text` has a number with a decimal point in it ("0.500"), which a German window
 /// should not show.
 bool hasDecimalPoint(const QString& text)
@@ -345,7 +332,7 @@ void LanguageTest::readoutsFollowTheLocale()
 {
     QVERIFY(startIn(QStringLiteral("de")));
     MainWindow window;
-    window.setScene(movingBallWorld(), QStringLiteral("moving"));
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
     window.resize(1200, 750);
     window.show();
     window.activateWindow();

@@ -21,6 +21,19 @@ inline model::Body makeBody(std::string name, model::Shape shape, Vec2 position,
     return body;
 }
 
+/// No gravity; a ball of radius 0.1 m at the origin moving right at 2 m/s, and a fixed 0.2 m box at
+/// (2, 1) m that frames the view around it and for the ruler to snap to.
+inline model::World movingBallWorld()
+{
+    model::World world;
+    world.settings.gravity = Vec2::Zero();
+    model::Body ball = makeBody("ball", model::Circle{0.1}, Vec2(0, 0));
+    ball.state.velocity = Vec2(2, 0);
+    world.bodies.push_back(ball);
+    world.bodies.push_back(makeBody("marker", model::Box{0.2, 0.2}, Vec2(2, 1), true));
+    return world;
+}
+
 /// A pin hinging body `a` of `world` to body `b` at the world point `hinge`, its anchors in each
 /// body's frame taken from their current poses, as the scene loader derives them.
 inline model::Joint pinAt(const model::World& world, model::BodyId a, model::BodyId b, Vec2 hinge)
