@@ -42,6 +42,9 @@ double squaredDistance(const QPointF& a, const QPointF& b)
 /// part of a paint after the bodies and trails (docs/benchmarks.md, "The frame budget").
 class ArrowBatch {
 public:
+    /// Arrows drawn `scale` times their normal width and head (projector mode's thick lines).
+    explicit ArrowBatch(double scale = 1) : m_scale(scale) {}
+
     /// An arrow from `from` to `to` (px) with a filled head, in `color`. Shorter than kMinArrowPx
     /// it is left out; longer than kMaxArrowPx it is cut there and drawn dashed.
     void add(QPointF from, QPointF to, const QColor& color)
@@ -56,7 +59,7 @@ public:
             to = line.p2();
             clipped = true;
         }
-        const double head = std::min(constants::kArrowHeadPx, kMaxHeadFraction * line.length());
+        const double head = std::min(m_scale * constants::kArrowHeadPx, kMaxHeadFraction * line.length());
         const QPointF unit = (to - from) / line.length();
         const QPointF normal(-unit.y(), unit.x());
         const QPointF base = to - head * unit;
@@ -73,11 +76,11 @@ public:
         for (const Group& group : m_groups) {
             painter.setBrush(Qt::NoBrush);
             if (!group.solid.isEmpty()) {
-                painter.setPen(QPen(group.color, constants::kArrowWidthPx, Qt::SolidLine, Qt::FlatCap));
+                painter.setPen(QPen(group.color, m_scale * constants::kArrowWidthPx, Qt::SolidLine, Qt::FlatCap));
                 painter.drawLines(group.solid);
             }
             if (!group.dashed.isEmpty()) {
-                painter.setPen(QPen(group.color, constants::kArrowWidthPx, Qt::DashLine, Qt::FlatCap));
+                painter.setPen(QPen(group.color, m_scale * constants::kArrowWidthPx, Qt::DashLine, Qt::FlatCap));
                 painter.drawLines(group.dashed);
             }
             // Each head filled on its own: the 2000 heads of the large example as one path
@@ -109,6 +112,7 @@ private:
         return group;
     }
 
+    double m_scale = 1;
     std::vector<Group> m_groups;
 };
 
@@ -221,6 +225,15 @@ void CanvasInstruments::scaleArrows(double factor)
         return;
     for (double& scale : m_scales)
         scale *= factor;
+    emit changed();
+}
+
+void CanvasInstruments::setLineScale(double scale)
+{
+    if (scale == m_lineScale)
+        return;
+    m_lineScale = scale;
+    invalidateTrailPictures();
     emit changed();
 }
 
@@ -396,6 +409,7 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
         line << cursor.lineEnd;
     QPointF skipped; // the last point left out of the line, px
     bool pending = false;
+    const double dotRadius = m_lineScale * constants::kTrailDotRadiusPx;
     for (auto it = from; it != points.end(); ++it) {
         const TrailPoint& point = *it;
         if (point.step > shown)
@@ -415,7 +429,7 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
         // stack a dot every 0.1 s on one spot.
         const QPointF* lastDot = !dots.empty() ? &dots.back() : cursor.hasDot ? &cursor.lastDot : nullptr;
         if (point.step % m_dotSteps == 0 &&
-            (!lastDot || squaredDistance(*lastDot, px) >= 4 * constants::kTrailDotRadiusPx * constants::kTrailDotRadiusPx))
+            (!lastDot || squaredDistance(*lastDot, px) >= 4 * dotRadius * dotRadius))
             dots.push_back(px);
     }
     // A whole trail is drawn even as a single point, as it always was; growth only when it grew.
@@ -433,7 +447,7 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
     const model::Color c = world.bodies[i].color;
     const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
     if (line.size() > carried) {
-        painter.setPen(QPen(colour, constants::kTrailWidthPx));
+        painter.setPen(QPen(colour, m_lineScale * constants::kTrailWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
     }
@@ -441,7 +455,7 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
         painter.setPen(Qt::NoPen);
         painter.setBrush(colour.darker());
         for (const QPointF& dot : dots)
-            painter.drawEllipse(dot, constants::kTrailDotRadiusPx, constants::kTrailDotRadiusPx);
+            painter.drawEllipse(dot, dotRadius, dotRadius);
     }
 }
 
@@ -454,7 +468,7 @@ void CanvasInstruments::paintVectors(QPainter& painter) const
     painter.save();
     painter.resetTransform();
     painter.setRenderHint(QPainter::Antialiasing);
-    ArrowBatch arrows;
+    ArrowBatch arrows(m_lineScale);
     const auto arrow = [&](const Vec2& at, const Vec2& value, VectorKind kind, const QColor& color) {
         const Vec2 tip = at + vectorScale(kind) * value;
         arrows.add(toPixels.map(toPoint(at)), toPixels.map(toPoint(tip)), color);
@@ -527,7 +541,7 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     painter.setRenderHint(QPainter::Antialiasing);
     const QFontMetricsF metrics(painter.font());
     const double pad = constants::kLegendPaddingPx;
-    const double swatch = kSwatchHeads * constants::kArrowHeadPx;
+    const double swatch = kSwatchHeads * m_lineScale * constants::kArrowHeadPx;
     double width = 0;
     for (const QString& line : lines)
         width = std::max(width, metrics.horizontalAdvance(line));
@@ -539,7 +553,7 @@ void CanvasInstruments::paintLegend(QPainter& painter, const QRectF& viewport) c
     painter.drawRect(box);
     for (qsizetype i = 0; i < lines.size(); ++i) {
         const double y = box.top() + pad + lineHeight * (static_cast<double>(i) + 0.5);
-        ArrowBatch sample;
+        ArrowBatch sample(m_lineScale);
         sample.add(QPointF(box.left() + pad, y), QPointF(box.left() + pad + swatch, y), colours[static_cast<std::size_t>(i)]);
         sample.paint(painter);
         painter.setPen(constants::kMeasureColor);

@@ -83,6 +83,11 @@ public:
     /// Multiplies every kind's scale by `factor` (> 0): longer or shorter arrows.
     void scaleArrows(double factor);
 
+    /// Arrows, their legend's samples, trails and trail dots drawn `scale` times their normal width
+    /// (CanvasLook::lineScale: projector mode's thick lines).
+    void setLineScale(double scale);
+    double lineScale() const { return m_lineScale; }
+
     /// Draws arrows and trails for the selected bodies only (true) or for every body (false).
     bool selectedOnly() const { return m_selectedOnly; }
     void setSelectedOnly(bool on);
@@ -172,6 +177,7 @@ private:
     std::map<std::string, std::array<bool, kVectorKindCount>> m_bodyShown;
     std::array<double, kVectorKindCount> m_scales{};
     bool m_selectedOnly = false;
+    double m_lineScale = 1; ///< × the normal widths of arrows and trails
     Selection m_selection;
     bool m_trails = false;
     int m_dotSteps;

@@ -253,6 +253,7 @@ void CanvasView::setLook(const CanvasLook& look)
 {
     m_look = look;
     m_layerDirty = true;
+    m_instruments->setLineScale(look.lineScale);
     applyLookToItems();
     resetCachedContent();
     viewport()->update();

@@ -4,6 +4,7 @@
 
 #include "support/pendulum_theory.h"
 #include "test_files.h"
+#include "test_pixels.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/canvas_instruments.h"
@@ -49,33 +50,6 @@ namespace constants = impetus::view::constants;
 namespace test = impetus::view::test;
 
 namespace {
-
-/// Pixels of `image` within a small distance of `colour` (antialiased edges blend into the paper),
-/// inside `region` (the whole image when null); their centroid goes to `centroid`.
-int pixelsNear(const QImage& image, const QColor& colour, QPoint* centroid = nullptr, QRect region = {})
-{
-    if (region.isNull())
-        region = image.rect();
-    region = region.intersected(image.rect());
-    int count = 0;
-    long long sx = 0;
-    long long sy = 0;
-    for (int y = region.top(); y <= region.bottom(); ++y) {
-        for (int x = region.left(); x <= region.right(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
-                    std::abs(c.blue() - colour.blue()) <=
-                24) {
-                ++count;
-                sx += x;
-                sy += y;
-            }
-        }
-    }
-    if (centroid && count > 0)
-        *centroid = QPoint(static_cast<int>(sx / count), static_cast<int>(sy / count));
-    return count;
-}
 
 /// A ball falling freely from (0, 10) m, with nothing to hit.
 model::World fallingBallWorld()
@@ -144,7 +118,7 @@ void InstrumentsTest::velocityVectorsAppearInTheGrab()
     QVERIFY(showActive(window));
     impetus::view::CanvasView& canvas = window.canvas();
     const QImage before = canvas.viewport()->grab().toImage();
-    QCOMPARE(pixelsNear(before, constants::kVelocityColor), 0);
+    QCOMPARE(test::pixelsNear(before, constants::kVelocityColor), 0);
 
     window.vectorAction(VectorKind::Velocity)->trigger();
     QVERIFY(canvas.instruments().showsVector(VectorKind::Velocity));
@@ -156,7 +130,7 @@ void InstrumentsTest::velocityVectorsAppearInTheGrab()
     const int reach = static_cast<int>(2 * expectedLengthPx);
     const QRect aroundBall(ball.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
     QPoint centroid;
-    const int arrow = pixelsNear(after, constants::kVelocityColor, &centroid, aroundBall);
+    const int arrow = test::pixelsNear(after, constants::kVelocityColor, &centroid, aroundBall);
     QVERIFY2(arrow > expectedLengthPx, qPrintable(QStringLiteral("%1 arrow pixels").arg(arrow)));
     // It points to the right of the ball, along its velocity, at its height.
     QVERIFY(centroid.x() > ball.x() + 0.25 * expectedLengthPx);
@@ -168,16 +142,16 @@ void InstrumentsTest::velocityVectorsAppearInTheGrab()
     canvas.zoomBy(2, ball);
     const QPointF ballIn = canvas.toView(QPointF(0, 0));
     const QRect aroundIn(ballIn.toPoint() - QPoint(2 * reach, 2 * reach), QSize(4 * reach, 4 * reach));
-    const int zoomedIn = pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, aroundIn);
+    const int zoomedIn = test::pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, aroundIn);
     QVERIFY2(std::abs(zoomedIn / (2 * expectedLengthPx) - density) < 0.25 * density,
              qPrintable(QStringLiteral("%1 px along %2 px, before %3").arg(zoomedIn).arg(2 * expectedLengthPx).arg(arrow)));
     canvas.zoomBy(0.05, ballIn);
     const QPoint ballOut = canvas.toView(QPointF(0, 0)).toPoint();
     const QRect nearBall(ballOut - QPoint(40, 40), QSize(80, 80));
-    QVERIFY(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, nearBall) > 0);
+    QVERIFY(test::pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor, nullptr, nearBall) > 0);
 
     window.vectorAction(VectorKind::Velocity)->trigger();
-    QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0); // legend gone too
+    QCOMPARE(test::pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0); // legend gone too
 }
 
 void InstrumentsTest::legendGivesTheScaleAndItCanBeChanged()
@@ -221,8 +195,8 @@ void InstrumentsTest::forceArrowsOfABoxOnTheFloorComeFromTheEngine()
     const QPointF centre = window.canvas().toView(QPointF(0, 0.2));
     const int reach = static_cast<int>(weight * constants::kDefaultForceScale * window.canvas().pixelsPerMetre()) + 20;
     const QRect aroundBox(centre.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
-    QVERIFY(pixelsNear(image, constants::kGravityColor, &gravity, aroundBox) > 0);
-    QVERIFY(pixelsNear(image, constants::kContactNormalColor, &normal, aroundBox) > 0);
+    QVERIFY(test::pixelsNear(image, constants::kGravityColor, &gravity, aroundBox) > 0);
+    QVERIFY(test::pixelsNear(image, constants::kContactNormalColor, &normal, aroundBox) > 0);
     QVERIFY(gravity.y() > centre.y());
     QVERIFY(normal.y() < centre.y());
 }
@@ -248,7 +222,7 @@ void InstrumentsTest::trailsHaveDotsAndFollowTheTimeline()
     // A dot every 24 steps (0.1 s): at steps 0, 24 and 48.
     const QImage image = window.canvas().viewport()->grab().toImage();
     const QColor dotColour = QColor(0x3b, 0x82, 0xf6).darker();
-    QVERIFY(pixelsNear(image, dotColour) > 0);
+    QVERIFY(test::pixelsNear(image, dotColour) > 0);
 
     // Back along the timeline, the trail ends at the ball; Play from there forgets the rest.
     window.timeline().seek(30);
@@ -563,7 +537,7 @@ void InstrumentsTest::probeFollowsAFallingBall()
     QVERIFY(before.top() < ballBefore.y() && ballBefore.y() < before.bottom());
     // The label is painted there: dark text on its paper, and nothing dark there before.
     const QImage probed = viewport->grab().toImage();
-    QVERIFY(pixelsNear(probed, constants::kMeasureColor, nullptr, before.toRect()) > 0);
+    QVERIFY(test::pixelsNear(probed, constants::kMeasureColor, nullptr, before.toRect()) > 0);
 
     // Half a second of fall in batches, then one Step (→) as a user presses it.
     for (int i = 0; i < 7; ++i)
@@ -590,7 +564,7 @@ void InstrumentsTest::probeFollowsAFallingBall()
     const double fallPx = (10 - ball.state.position.y()) * canvas.pixelsPerMetre();
     QVERIFY2(std::abs(after.top() - before.top() - fallPx) < 1.0,
              qPrintable(QStringLiteral("%1 -> %2, %3 px").arg(before.top()).arg(after.top()).arg(fallPx)));
-    QVERIFY(pixelsNear(viewport->grab().toImage(), constants::kMeasureColor, nullptr, after.toRect()) > 0);
+    QVERIFY(test::pixelsNear(viewport->grab().toImage(), constants::kMeasureColor, nullptr, after.toRect()) > 0);
 
     // Scrubbed back along the timeline, the label reads the state there.
     window.timeline().seek(24);
@@ -656,15 +630,15 @@ void InstrumentsTest::velocityVectorsOfOneBodyFromThePane()
 
     // An arrow on that ball only, and the legend gives its scale.
     QImage image = canvas.viewport()->grab().toImage();
-    QVERIFY2(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 0))) > arrowPx / 2,
+    QVERIFY2(test::pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 0))) > arrowPx / 2,
              qPrintable(QStringLiteral("%1 px").arg(arrowPx)));
-    QCOMPARE(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 1.5))), 0);
+    QCOMPARE(test::pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0, 1.5))), 0);
     QCOMPARE(canvas.instruments().legendLines(), QStringList{QStringLiteral("velocity: 1 m/s = 0.25 m")});
     // The arrow moves with the ball.
     window.runner().stepBy(24);
     image = canvas.viewport()->grab().toImage();
-    QVERIFY(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 0))) > arrowPx / 2);
-    QCOMPARE(pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 1.5))), 0);
+    QVERIFY(test::pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 0))) > arrowPx / 2);
+    QCOMPARE(test::pixelsNear(image, constants::kVelocityColor, nullptr, around(QPointF(0.2, 1.5))), 0);
 
     // The other ball's box is not ticked; back on the first, it is.
     window.document().setSelection(impetus::view::Selection{{2}, {}, {}});
@@ -677,7 +651,7 @@ void InstrumentsTest::velocityVectorsOfOneBodyFromThePane()
     // Cleared, the arrow goes.
     QTest::mouseClick(velocity, Qt::LeftButton, Qt::NoModifier, QPoint(half, half));
     QVERIFY(!canvas.instruments().showsBodyVector("ball", VectorKind::Velocity));
-    QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0);
+    QCOMPARE(test::pixelsNear(canvas.viewport()->grab().toImage(), constants::kVelocityColor), 0);
 }
 
 // View › Acceleration, Net Force and Momentum, as a user toggles them: each arrow is found in a
@@ -717,11 +691,11 @@ void InstrumentsTest::accelerationForceAndMomentumArrowsPointAlongTheirVectors()
         const double lengthPx = arrow.lengthM * canvas.pixelsPerMetre();
         const int reach = static_cast<int>(lengthPx) + 20;
         const QRect around(centre.toPoint() - QPoint(reach, reach), QSize(2 * reach, 2 * reach));
-        QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
+        QCOMPARE(test::pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
         window.vectorAction(arrow.kind)->trigger();
         QVERIFY(canvas.instruments().showsVector(arrow.kind));
         QPoint centroid;
-        const int pixels = pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, &centroid, around);
+        const int pixels = test::pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, &centroid, around);
         const QString what = QStringLiteral("kind %1: %2 px, centroid (%3, %4), ball (%5, %6), length %7 px")
                                  .arg(static_cast<int>(arrow.kind))
                                  .arg(pixels)
@@ -736,7 +710,7 @@ void InstrumentsTest::accelerationForceAndMomentumArrowsPointAlongTheirVectors()
         QVERIFY2(centroid.y() > centre.y() + 0.3 * lengthPx && centroid.y() < centre.y() + 0.8 * lengthPx,
                  qPrintable(what));
         window.vectorAction(arrow.kind)->trigger();
-        QCOMPARE(pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
+        QCOMPARE(test::pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
     }
 }
 

@@ -1,15 +1,18 @@
 // View › Projector Mode, driven as a user would: F11 on the window, then what the class sees —
 // larger readouts, full screen, thick lines, and colliding bodies marked by more than colour.
 
+#include "test_pixels.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/body_item.h"
+#include "view/canvas_instruments.h"
 #include "view/canvas_look.h"
 #include "view/canvas_view.h"
 #include "view/main_window.h"
 #include "view/projector_constants.h"
 #include "view/projector_mode.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include <QAction>
 #include <QLabel>
@@ -89,6 +92,7 @@ private slots:
     void f11EnlargesTheReadoutsAndGoesFullScreen();
     void projectorModeIsRememberedForTheNextWindow();
     void collidingBodyIsHatchedBesidesRed();
+    void arrowsAndTrailsAreThickInProjectorMode();
 
 private:
     static bool showActive(MainWindow& window);
@@ -188,6 +192,71 @@ void ProjectorModeTest::collidingBodyIsHatchedBesidesRed()
     QVERIFY(!canvas.bodyItems()[1]->isColliding());
     QVERIFY2(coloursInside(canvas, 1).dark < 0.01, "a body at rest before any step is hatched");
     window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+}
+
+// "Thick outlines and arrows": the velocity arrow and the trail are drawn kProjectorLineScale
+// times as wide in projector mode, so they stay visible from the back of the room.
+void ProjectorModeTest::arrowsAndTrailsAreThickInProjectorMode()
+{
+    MainWindow window;
+    window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
+    QVERIFY(showActive(window));
+    window.vectorAction(view::VectorKind::Velocity)->trigger();
+    window.trailsAction()->trigger();
+    window.runner().stepBy(120); // half a second at 2 m/s: a metre of trail
+    view::CanvasView& canvas = window.canvas();
+    QCOMPARE(canvas.instruments().lineScale(), 1.0);
+
+    // Pixels of the arrow, and of the trail, per pixel of their length: their width on screen.
+    struct Widths {
+        double arrow = 0;
+        double trail = 0;
+    };
+    const auto widths = [&]() -> Widths {
+        const QImage image = canvas.viewport()->grab().toImage();
+        const impetus::Vec2 ball = window.runner().world().bodies[0].state.position;
+        const QPointF centre = canvas.toView(QPointF(ball.x(), ball.y()));
+        const double perMetre = canvas.pixelsPerMetre();
+        const double arrowPx = 2 * constants::kDefaultVelocityScale * perMetre; // 2 m/s
+        // Right of the ball the arrow; left of it the trail, a body's own colour, half-transparent
+        // over the paper (found by a band of rows around the ball's height, clear of the ball).
+        const int radius = static_cast<int>(0.1 * perMetre) + 4;
+        const QRect ahead(static_cast<int>(centre.x()) + radius, static_cast<int>(centre.y()) - 30,
+                          static_cast<int>(arrowPx), 60);
+        const int arrow = test::pixelsNear(image, constants::kVelocityColor, nullptr, ahead);
+        const int trailLength = static_cast<int>(0.6 * perMetre);
+        const QRect behind(static_cast<int>(centre.x()) - radius - trailLength, static_cast<int>(centre.y()) - 30,
+                           trailLength, 60);
+        const QColor paper = image.pixelColor(behind.topLeft());
+        int trail = 0;
+        for (int y = behind.top(); y <= behind.bottom(); ++y) {
+            for (int x = behind.left(); x <= behind.right(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (std::abs(c.red() - paper.red()) + std::abs(c.green() - paper.green()) +
+                        std::abs(c.blue() - paper.blue()) > 60)
+                    ++trail;
+            }
+        }
+        return {arrow / arrowPx, trail / static_cast<double>(trailLength)};
+    };
+    const Widths normal = widths();
+    QVERIFY2(normal.arrow > 1 && normal.trail > 0.5, qPrintable(QStringLiteral("%1 %2").arg(normal.arrow).arg(normal.trail)));
+
+    window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+    QCOMPARE(canvas.instruments().lineScale(), view::constants::kProjectorLineScale);
+    const Widths projector = widths();
+    const QString what = QStringLiteral("arrow %1 -> %2 px, trail %3 -> %4 px")
+                             .arg(normal.arrow)
+                             .arg(projector.arrow)
+                             .arg(normal.trail)
+                             .arg(projector.trail);
+    qInfo("%s", qPrintable(what));
+    QVERIFY2(projector.arrow > 2 * normal.arrow, qPrintable(what));
+    // A 1 px trail already darkens two or three rows with its antialiasing, 2.5 px four or five,
+    // and the dots grow with it: about twice the pixels (3.3 against 6.7 px here).
+    QVERIFY2(projector.trail > 1.6 * normal.trail, qPrintable(what));
+    window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
+    QCOMPARE(canvas.instruments().lineScale(), 1.0);
 }
 
 QTEST_MAIN(ProjectorModeTest)
