@@ -7,11 +7,13 @@ set -euo pipefail
 IMPETUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 # Build tools, the engine's libraries, Qt for the app, Qt Linguist's tools for the translations
-# (lrelease at build time, the CMake package), and fonts so that text renders offscreen.
+# (lrelease at build time, the CMake package), fonts so that text renders offscreen, and Doxygen,
+# so that the test suite checks that the engine's API reference builds without a warning.
 IMPETUS_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 qt6-l10n-tools qt6-tools-dev fonts-dejavu-core
+  doxygen
 )
 
 # What scripts/fuzz needs besides the engine's build tools and libraries: clang 14 and its
