@@ -189,6 +189,88 @@ TEST_P(ImpactArms, SlidingSpinningCircleIsStruckAtItsFacingPoint)
     EXPECT_GT(after.position.y(), radius);
 }
 
+/// A dumbbell at rest in zero gravity, struck end-on late in a step (issue 16, review point 3: the
+/// joint target that ignored the impact's late velocity). Balls A and B of 1 kg on a 1 m rod
+/// along x; a third, S, of 1 kg meets B head on at c = 10 m/s at τ of the substep it strikes in.
+/// Elastic, frictionless, equal masses: S stops and B takes −c. B then moves at its end velocity
+/// only after τ·hₛ (Simulation::finishBodyPosition), A, not struck, all through the substep: the
+/// rod keeps its length when the two move alike, hₛ·v_A = (1 − τ)·hₛ·v_B, and with the momentum,
+/// v_A + v_B = −c, that is v_B = −c/(2 − τ) and v_A = (1 − τ)·v_B. The next step's rod evens the
+/// two out to −c/2 each.
+struct StruckDumbbell {
+    Scalar h; ///< the world step, s
+    int substeps; ///< what the solver splits it into (solverSubsteps)
+    Scalar tau; ///< the meeting, as a fraction of the last substep
+};
+
+// Before the fix the rod's target counted B's end velocity for the whole substep: it gave both
+// balls −c/2, B's time at rest before the blow left it τ·hₛ·c/2 = 10.4 mm short of where the rod
+// wanted it, and the position passes took that back by moving the balls: A ended 5.2 mm off where
+// its velocity had carried it and B as far the other way, at 1/240 s and at 1/60 s alike (the
+// rod's length was right after the passes). Since, the velocities alone keep the rod's length and
+// the balls end where their velocities carried them, to rounding: measured 2e-16 m off (bound
+// 1e-12 m), the velocities 5e-14 m/s off the hand-worked ones (bound 1e-10 m/s; before the fix
+// 1.67 m/s off). The blow falls at τ = 0.5 of its substep, the latest at which the joints count a
+// struck body's end velocity for exactly the rest of the substep (kMinStruckShare in
+// joint_solver.cpp: past half of it they count half and leave the difference to the position
+// passes); at 1/60 s, split into four substeps, that is 7/8 of the way through the step.
+TEST(StruckRod, TheRodHoldsByItsVelocitiesWhenItsBallIsStruckLateInTheStep)
+{
+    const Scalar c = 10; // m/s
+    const Scalar length = 1; // m
+    const Scalar radius = 0.1; // m
+    for (const StruckDumbbell& k : {StruckDumbbell{1.0 / 240, 1, 0.5}, StruckDumbbell{1.0 / 60, 4, 0.5}}) {
+        SCOPED_TRACE(::testing::Message() << "step 1/" << 1 / k.h);
+        ASSERT_EQ(solverSubsteps(k.h, settingsUnderTest().maxSubstep), k.substeps);
+        const Scalar hs = k.h / k.substeps;
+        const Scalar meet = (k.substeps - 1 + k.tau) * hs; // s into the step
+        model::World world = makeEmptyWorld(IntegratorKind::Rk4, k.h);
+        world.bodies.push_back(withMaterial(makeBall("A", 1, radius, Vec2(0, 0)), 1, 0));
+        world.bodies.push_back(withMaterial(makeBall("B", 1, radius, Vec2(length, 0)), 1, 0));
+        const Scalar strikerStart = length + 2 * radius + c * meet;
+        world.bodies.push_back(withMaterial(makeBall("S", 1, radius, Vec2(strikerStart, 0), Vec2(-c, 0)), 1, 0));
+        model::Joint rod;
+        rod.type = model::JointType::Rod;
+        rod.bodyA = model::BodyId{0};
+        rod.bodyB = model::BodyId{1};
+        rod.anchorA = Vec2::Zero();
+        rod.anchorB = Vec2::Zero();
+        rod.length = length;
+        world.joints.push_back(rod);
+        const Scalar before = computeEnergy(world).kinetic;
+
+        Simulation simulation(settingsUnderTest());
+        std::vector<ImpactRecord> log;
+        simulation.setImpactLog(&log);
+        simulation.step(world);
+        ASSERT_EQ(log.size(), 1u);
+        EXPECT_NEAR(log[0].points[0].tau, k.tau, 1e-9);
+
+        const model::BodyState& a = world.bodies[0].state;
+        const model::BodyState& b = world.bodies[1].state;
+        const model::BodyState& s = world.bodies[2].state;
+        // The hand-worked velocities (before the fix −c/2 each), and the blow's momentum, −c·1 kg.
+        const Scalar vB = -c / (2 - k.tau);
+        EXPECT_NEAR(b.velocity.x(), vB, 1e-10);
+        EXPECT_NEAR(a.velocity.x(), (1 - k.tau) * vB, 1e-10);
+        EXPECT_NEAR(s.velocity.x(), 0, 1e-10);
+        EXPECT_NEAR(a.velocity.x() + b.velocity.x() + s.velocity.x(), -c, 1e-10);
+        // Each ball ends where its velocity carried it (before the fix A and B 5.2 mm off), ...
+        EXPECT_NEAR(a.position.x(), hs * a.velocity.x(), 1e-12);
+        EXPECT_NEAR(b.position.x(), length + (1 - k.tau) * hs * b.velocity.x(), 1e-12);
+        EXPECT_NEAR(s.position.x(), strikerStart - c * meet, 1e-12);
+        // ... which keeps the rod's length, and no energy is made.
+        EXPECT_NEAR((b.position - a.position).norm(), length, 1e-12);
+        EXPECT_LE(computeEnergy(world).kinetic, before);
+
+        // The next step: the rod evens the two balls out, and keeps its length.
+        simulation.step(world);
+        EXPECT_NEAR(a.velocity.x(), -c / 2, 1e-10);
+        EXPECT_NEAR(b.velocity.x(), -c / 2, 1e-10);
+        EXPECT_NEAR((b.position - a.position).norm(), length, 1e-12);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Integrators, ImpactArms,
                          ::testing::Values(IntegratorKind::Rk4, IntegratorKind::SemiImplicitEuler,
                                            IntegratorKind::Euler));
