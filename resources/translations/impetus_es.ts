@@ -472,7 +472,7 @@
     </message>
     <message>
         <source>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</source>
-        <translation>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5, μ = %6&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;m&lt;sub&gt;A&lt;/sub&gt; = %1 kg, 1/I&lt;sub&gt;A&lt;/sub&gt; = %2 1/(kg·m²); m&lt;sub&gt;B&lt;/sub&gt; = %3 kg, 1/I&lt;sub&gt;B&lt;/sub&gt; = %4 1/(kg·m²); e = %5; μ = %6&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;Point %1&lt;/b&gt;&lt;/p&gt;</source>
@@ -492,7 +492,7 @@
     </message>
     <message>
         <source>&lt;p&gt;Two points struck at once: the engine solves K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; for both together, K = [[%1, %2], [%3, %4]] 1/kg, and applied &lt;b&gt;%5 N·s&lt;/b&gt; here (the formula above is this point alone).&lt;/p&gt;</source>
-        <translation>&lt;p&gt;Dos puntos golpeados a la vez: la simulación resuelve K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; para ambos juntos, K = [[%1, %2], [%3, %4]] 1/kg, y aplicó aquí &lt;b&gt;%5 N·s&lt;/b&gt; (la fórmula de arriba es solo para este punto).&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;Dos puntos golpeados a la vez: la simulación resuelve K·j = −(1 + e)·v&lt;sub&gt;n&lt;/sub&gt; para ambos juntos, K = [[%1; %2]; [%3; %4]] 1/kg, y aplicó aquí &lt;b&gt;%5 N·s&lt;/b&gt; (la fórmula de arriba es solo para este punto).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;The engine applied %1 N·s.&lt;/p&gt;</source>
@@ -521,6 +521,11 @@
     <message>
         <source>&lt;p&gt;A fixed body takes any momentum: the pair&apos;s momentum changes by the impulse.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Un cuerpo fijo absorbe cualquier momento lineal: el momento lineal del par cambia en lo que vale el impulso.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <extracomment>A vector: its x and y. Where the decimal separator is a comma, separate them with a semicolon: (0,6; -0,8).</extracomment>
+        <translation>(%1; %2)</translation>
     </message>
 </context>
 <context>
@@ -2742,6 +2747,11 @@
     <message>
         <source>N: next axis   P: previous   Esc: close</source>
         <translation>N: eje siguiente   P: anterior   Esc: cerrar</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <extracomment>A point or a direction: its x and y. Where the decimal separator is a comma, separate them with a semicolon: (0,600; 0,800).</extracomment>
+        <translation>(%1; %2)</translation>
     </message>
 </context>
 <context>

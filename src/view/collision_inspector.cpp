@@ -10,8 +10,10 @@
 #include "view/simulation_runner.h"
 #include "view/timeline.h"
 
+#include <QCoreApplication>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QSplitter>
 #include <QTextBrowser>
 #include <QVBoxLayout>
@@ -23,15 +25,30 @@ namespace impetus::view {
 
 namespace {
 
-/// A number as the formula shows it: six significant digits, ∞ for a fixed body's mass.
+// The inspector's numbers are in the window's number format ("3,75 N·s" in German), as the status
+// bar's and the probe's.
+
+/// A number as the formula shows it: six significant digits, ∞ for a fixed body's mass. The
+/// exponent keeps its small e (1e-07) in every language: QLocale would write the locale's symbol,
+/// a capital E in English and German.
 QString num(Scalar x)
 {
     if (std::isinf(x))
         return QStringLiteral("∞");
-    return QString::number(x, 'g', 6);
+    const QLocale locale;
+    return locale.toString(x, 'g', 6).replace(locale.exponential(), QStringLiteral("e"));
 }
 
-QString vec(const Vec2& v) { return QStringLiteral("(%1, %2)").arg(num(v.x()), num(v.y())); }
+/// A time in seconds, to the tenth of a millisecond.
+QString seconds(double t) { return QLocale().toString(t, 'f', 4); }
+
+QString vec(const Vec2& v)
+{
+    //: A vector: its x and y. Where the decimal separator is a comma, separate them with a
+    //: semicolon: (0,6; -0,8).
+    return QCoreApplication::translate("impetus::view::CollisionInspector", "(%1, %2)")
+        .arg(num(v.x()), num(v.y()));
+}
 
 QString bodyName(const model::World& world, std::uint32_t index)
 {
@@ -165,7 +182,7 @@ void CollisionInspector::rebuildList()
     for (const CollisionLogEntry& entry : m_entries) {
         const QString impulse = num(entry.event.normalImpulse);
         m_list->addItem(tr("t = %1 s: %2 and %3, impulse %4 N·s")
-                            .arg(QString::number(entry.event.time, 'f', 4))
+                            .arg(seconds(entry.event.time))
                             .arg(QString::fromStdString(entry.event.bodyA.index < world.bodies.size()
                                                             ? world.bodies[entry.event.bodyA.index].name
                                                             : std::string()))
@@ -208,7 +225,7 @@ QString CollisionInspector::formulaHtml(const CollisionLogEntry& entry) const
     const controller::CollisionEvent& event = entry.event;
     QString html = tr("<h3>%1 and %2 at t = %3 s</h3>")
                        .arg(bodyName(world, event.bodyA.index), bodyName(world, event.bodyB.index),
-                            QString::number(event.time, 'f', 4));
+                            seconds(event.time));
     html += tr("<p>Normal n = %1 (from %2 to %3). Total normal impulse this step, as logged: <b>%4 N·s</b>; "
                "relative normal speed %5 m/s before, %6 m/s after the step.</p>")
                 .arg(vec(event.normal), bodyName(world, event.bodyA.index), bodyName(world, event.bodyB.index),

@@ -7,11 +7,13 @@
 #include "view/explain_constants.h"
 #include "view/scene_document.h"
 
+#include <QCoreApplication>
 #include <QEvent>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QLocale>
 #include <QPainter>
 #include <QtMath>
 
@@ -24,9 +26,21 @@ namespace {
 
 QPointF toPoint(const Vec2& v) { return {v.x(), v.y()}; }
 
-QString mm(Scalar metres) { return QString::number(metres * constants::kMillimetresPerMetre, 'f', 3); }
+// The panel's numbers are in the window's number format ("500,000 mm" in German), as the status
+// bar's and the probe's.
 
-QString vec(const Vec2& v) { return QStringLiteral("(%1, %2)").arg(v.x(), 0, 'f', 3).arg(v.y(), 0, 'f', 3); }
+/// A number with the panel's three decimals.
+QString decimals(Scalar x) { return QLocale().toString(x, 'f', 3); }
+
+QString mm(Scalar metres) { return decimals(metres * constants::kMillimetresPerMetre); }
+
+QString vec(const Vec2& v)
+{
+    //: A point or a direction: its x and y. Where the decimal separator is a comma, separate them
+    //: with a semicolon: (0,600; 0,800).
+    return QCoreApplication::translate("impetus::view::SatExplainer", "(%1, %2)")
+        .arg(decimals(v.x()), decimals(v.y()));
+}
 
 const QColor& ownerColor(int owner) { return owner == 0 ? constants::kExplainPieceA : constants::kExplainPieceB; }
 

@@ -7,11 +7,13 @@
 #include "test_worlds.h"
 #include "view/canvas_instruments.h"
 #include "view/canvas_view.h"
+#include "view/collision_inspector.h"
 #include "view/language.h"
 #include "view/graph_panel.h"
 #include "view/graph_quantity.h"
 #include "view/main_window.h"
 #include "view/property_pane.h"
+#include "view/sat_explainer.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
 #include "view/tools/measure_tools.h"
@@ -26,6 +28,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
@@ -157,6 +160,7 @@ private slots:
     void englishNeedsNoTranslation();
     void numbersFollowTheLocaleButSceneFilesDoNot();
     void readoutsFollowTheLocale();
+    void explainersFollowTheLocale();
     void languageMenuKeepsTheChoiceForTheNextStart();
     void unknownLanguageSettingMeansTheSystemLanguage();
 
@@ -411,6 +415,101 @@ void LanguageTest::readoutsFollowTheLocale()
     const QStringList legend = canvas.instruments().legendLines();
     QCOMPARE(legend.size(), 1);
     QVERIFY2(legend.front().endsWith(QStringLiteral("1 m/s = 0,25 m")), qPrintable(legend.front()));
+}
+
+// Explain › Separating Axes and the Collision Inspector, read in a German window, write their
+// numbers with a decimal comma, and a semicolon between the numbers of a point, a vector or a
+// matrix row, so that "(0,000; 1,000)" cannot be read as three numbers.
+void LanguageTest::explainersFollowTheLocale()
+{
+    QVERIFY(startIn(QStringLiteral("de")));
+    // A 2 m × 1 m box of 2 kg lying flat on a fixed slab, centred 0.25 m right of the slab's centre
+    // and falling at 2 m/s: its bottom face, from x = −0.75 to 1.25 m, strikes at two points at once
+    // (r_B×n = ∓1 m, 1/I_B = 1.2 1/(kg·m²), so K = [[1.7, −0.7], [−0.7, 1.7]] 1/kg), e = 0.5.
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body slab = test::makeBody("slab", model::Box{10, 1}, impetus::Vec2(0, -0.5), true);
+    model::Body box = test::makeBody("box", model::Box{2, 1}, impetus::Vec2(0.25, 0.5));
+    box.massSpec = {model::MassMode::Mass, 2.0};
+    box.state.velocity = impetus::Vec2(0, -2);
+    box.material.restitution = 0.5;
+    box.updateDerived();
+    world.bodies.push_back(slab);
+    world.bodies.push_back(box);
+
+    MainWindow window;
+    window.setScene(world, QStringLiteral("impact"));
+    window.resize(1200, 750);
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    static const QRegularExpression decimalComma(QStringLiteral("[0-9],[0-9]"));
+
+    // Explain › Separating Axes on the slab and the box, clicked and Shift-clicked; every axis and
+    // the summary, stepped through with N.
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(-3, -0.5)).toPoint());
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ShiftModifier, canvas.toView(QPointF(0.25, 0.5)).toPoint());
+    auto* separatingAxes = window.findChild<QAction*>(QStringLiteral("separatingAxesAction"));
+    QVERIFY(separatingAxes && separatingAxes->isEnabled());
+    separatingAxes->trigger();
+    auto* explainer = window.findChild<view::SatExplainer*>(QStringLiteral("satExplainer"));
+    QVERIFY(explainer && explainer->isOpen());
+    const std::size_t axes = explainer->current()->trace.axes.size();
+    QCOMPARE(axes, std::size_t{8});
+    QStringList panels{explainer->panelText()};
+    while (explainer->currentAxis() < axes) {
+        QTest::keyClick(&canvas, Qt::Key_N);
+        panels << explainer->panelText();
+    }
+    QCOMPARE(panels.size(), 9);
+    for (const QString& panel : panels) {
+        QVERIFY2(panel.contains(decimalComma), qPrintable(panel));
+        QVERIFY2(!hasDecimalPoint(panel), qPrintable(panel));
+    }
+    const QStringList second = panels[1].split(QLatin1Char('\n'));
+    QVERIFY2(second.contains(QStringLiteral("Achse 2 von 8: Normale der Seite 2 von A, Richtung (1,000; 0,000)")),
+             qPrintable(panels[1]));
+    QVERIFY2(second.contains(QStringLiteral("Projektionen: A von -5000,000 bis 5000,000 mm, B von -750,000 bis "
+                                            "1250,000 mm")),
+             qPrintable(panels[1]));
+    const QStringList summary = panels.last().split(QLatin1Char('\n'));
+    QVERIFY2(summary.contains(QStringLiteral("Minimaler Verschiebungsvektor: 0,000 mm entlang (0,000; 1,000) "
+                                             "(schiebt B von A weg)")),
+             qPrintable(panels.last()));
+    QVERIFY2(summary.contains(QStringLiteral("Kontaktpunkt 1: (-0,750; 0,000) m, Abstand 0,000 mm")),
+             qPrintable(panels.last()));
+    QTest::keyClick(&canvas, Qt::Key_Escape); // closes the explainer
+    QVERIFY(!explainer->isOpen());
+    QTest::keyClick(&canvas, Qt::Key_Escape); // clears the selection, so → steps instead of nudging
+    QVERIFY(window.document().selection().empty());
+
+    // Explain › Collision Inspector; one step (→ on the canvas) and the impact clicked in the log.
+    auto* inspectorAction = window.findChild<QAction*>(QStringLiteral("collisionInspectorAction"));
+    QVERIFY(inspectorAction);
+    inspectorAction->trigger();
+    auto* inspector = window.findChild<view::CollisionInspector*>(QStringLiteral("collisionInspector"));
+    QVERIFY(inspector);
+    QTRY_VERIFY(inspector->isVisible());
+    canvas.setFocus();
+    QTest::keyClick(&canvas, Qt::Key_Right);
+    QTRY_COMPARE(inspector->entries().size(), std::size_t{1});
+    QListWidget* log = inspector->list();
+    QCOMPARE(log->count(), 1);
+    QCOMPARE(log->item(0)->text(), QStringLiteral("t = 0,0042 s: slab und box, Kraftstoß 6 N·s"));
+    QTest::mouseClick(log->viewport(), Qt::LeftButton, Qt::NoModifier, log->visualItemRect(log->item(0)).center());
+    QCOMPARE(inspector->selected(), std::optional<int>(0));
+    const QString formula = inspector->formulaText();
+    QVERIFY2(formula.contains(decimalComma), qPrintable(formula));
+    QVERIFY2(!hasDecimalPoint(formula), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("slab und box bei t = 0,0042 s")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("Normale n = (0; 1)")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("rB = (-1; -0,5) m")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("e = 0,5; μ = ")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("/ 1,7 = 1,76471 N·s")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("K = [[1,7; -0,7]; [-0,7; 1,7]] 1/kg")), qPrintable(formula));
+    QVERIFY2(formula.contains(QStringLiteral("Impuls des Paars: (0; -4) → (0; 2) kg·m/s")), qPrintable(formula));
 }
 
 void LanguageTest::languageMenuKeepsTheChoiceForTheNextStart()
