@@ -111,6 +111,15 @@ QLabel* statusLabel(MainWindow& window, const QString& name)
     return nullptr;
 }
 
+/// Shows `window` at 1200 × 750 px and waits until it is active.
+bool showLarge(MainWindow& window)
+{
+    window.resize(1200, 750);
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
 /// Chooses `code` as a user would have in View › Language before this start, then starts the app's
 /// language as impetus_main does. True when a translation was installed.
 bool startIn(const QString& code)
@@ -337,10 +346,7 @@ void LanguageTest::readoutsFollowTheLocale()
     QVERIFY(startIn(QStringLiteral("de")));
     MainWindow window;
     window.setScene(test::movingBallWorld(), QStringLiteral("moving"));
-    window.resize(1200, 750);
-    window.show();
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(showLarge(window));
     view::CanvasView& canvas = window.canvas();
     QWidget* viewport = canvas.viewport();
 
@@ -439,10 +445,7 @@ void LanguageTest::explainersFollowTheLocale()
 
     MainWindow window;
     window.setScene(world, QStringLiteral("impact"));
-    window.resize(1200, 750);
-    window.show();
-    window.activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(showLarge(window));
     view::CanvasView& canvas = window.canvas();
     QWidget* viewport = canvas.viewport();
     static const QRegularExpression decimalComma(QStringLiteral("[0-9],[0-9]"));
