@@ -226,9 +226,11 @@ inline const QColor kPreviewColor{0x25, 0x63, 0xeb};
 inline constexpr std::int64_t kKeyframeIntervalSteps = 240;
 
 /// The most memory the timeline's keyframes may take, bytes. When one more would pass it, every
-/// other periodic keyframe is dropped and the interval doubles, so a run of any length fits;
-/// 400 MiB leaves room under the 500 MB a 5-minute run of the 2000-body scene may use.
-inline constexpr std::size_t kTimelineMemoryBudgetBytes = std::size_t{400} * 1024 * 1024;
+/// other periodic keyframe is dropped and the interval doubles, so a run of any length fits.
+/// 256 MiB (268 MB) leaves room under the 500 MB a 5-minute run of the 2000-body scene may use
+/// in the window with its arrows, trails (kMaxTrailPointsInAll) and a graph on: the rest of the
+/// window took about 200 MB there (bench/timeline_memory.cpp, docs/app.md "Timeline").
+inline constexpr std::size_t kTimelineMemoryBudgetBytes = std::size_t{256} * 1024 * 1024;
 
 /// The timeline slider's steps are fixed steps; its page (a click in the groove) moves this many.
 inline constexpr int kTimelinePageSteps = 240;
@@ -289,6 +291,14 @@ inline constexpr double kTrailWidthPx = 1.0;
 inline constexpr double kTrailDotRadiusPx = 2.5;
 /// Trail colour alpha: the path reads under the bodies without hiding them.
 inline constexpr int kTrailAlpha = 170;
+/// A traced point's path (the Trace Point tool): one colour for every traced point, apart from
+/// the bodies' own trail colours and the arrows', a little wider than a trail, drawn over the
+/// bodies; a ring of this radius marks the point itself, px.
+inline const QColor kTracedPointColor{0xdb, 0x27, 0x77};
+inline constexpr double kTracedPointWidthPx = 1.5;
+inline constexpr double kTracedPointRingPx = 4.0;
+/// A click within this distance of a traced point on the Trace Point tool stops tracing it, px.
+inline constexpr double kTracedPointPickPx = 8.0;
 
 /// Graphs: the most samples one graph keeps (1 h at the default step); the oldest go first.
 inline constexpr std::size_t kMaxGraphSamples = 864000;

@@ -5,7 +5,9 @@
 #include "model/example_scenes.h"
 #include "test_settings.h"
 #include "test_worlds.h"
+#include "view/canvas_instruments.h"
 #include "view/canvas_view.h"
+#include "view/graph_quantity.h"
 #include "view/main_window.h"
 #include "view/scene_document.h"
 #include "view/scene_loading.h"
@@ -22,6 +24,7 @@
 #include <QStyleOptionSlider>
 #include <QTest>
 
+#include <algorithm>
 #include <vector>
 
 using impetus::view::MainWindow;
@@ -202,10 +205,21 @@ void TimelineTest::fiveMinutesOfTheLargeSceneFitIn500MB()
     const double total = keyframes * static_cast<double>(keyframe);
     qInfo("2000-body keyframe: %.2f MB (%zu contacts); 5 min = %.0f keyframes = %.0f MB", static_cast<double>(keyframe) / 1e6,
           world.contacts.size(), keyframes, total / 1e6);
-    QVERIFY(total < 500e6);
-    // The budget is below 500 MB too, so whatever the scene, the keyframes never pass it
-    // (memoryStaysWithinTheBudget checks that the timeline keeps to it).
-    QVERIFY(static_cast<double>(constants::kTimelineMemoryBudgetBytes) < 500e6);
+    // More than the budget: the timeline thins its keyframes (memoryStaysWithinTheBudget checks
+    // that it keeps to it), so they never take more than the budget.
+    QVERIFY(total > static_cast<double>(constants::kTimelineMemoryBudgetBytes));
+    const double keyframesAtMost = std::min(total, static_cast<double>(constants::kTimelineMemoryBudgetBytes));
+    // Beside them in the window, with the arrows, the trails and one graph on: the trails at their
+    // cap, five minutes of the graph's records, and the rest of the window, which
+    // bench/timeline_memory.cpp measured at about 90 MB besides trails and graph (67 MB with the
+    // scene loaded, before any step; docs/app.md, "Timeline").
+    const double trails = static_cast<double>(constants::kMaxTrailPointsInAll * sizeof(impetus::view::TrailPoint));
+    const double graph = runSteps * static_cast<double>(sizeof(impetus::view::GraphRecord));
+    constexpr double kRestOfTheWindow = 100e6;
+    const double whole = keyframesAtMost + trails + graph + kRestOfTheWindow;
+    qInfo("keyframes at most %.0f MB + trails %.0f MB + a graph %.0f MB + the window %.0f MB = %.0f MB",
+          keyframesAtMost / 1e6, trails / 1e6, graph / 1e6, kRestOfTheWindow / 1e6, whole / 1e6);
+    QVERIFY(whole < 500e6);
 }
 
 void TimelineTest::leftArrowStepsBackOneStepInTheWindow()
