@@ -1917,6 +1917,14 @@
         <source>Energy Ledger</source>
         <translation>Energiebilanz</translation>
     </message>
+    <message>
+        <source>Trace Point</source>
+        <translation>Punkt verfolgen</translation>
+    </message>
+    <message>
+        <source>Click a point on a body to draw the path it takes (a wheel&apos;s rim: a cycloid); click it again, or Esc, to stop</source>
+        <translation>Klicken Sie auf einen Punkt eines Körpers, um seine Bahn zu zeichnen (am Rand eines Rades: eine Zykloide); erneut klicken oder Esc beendet es</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>

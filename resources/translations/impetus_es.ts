@@ -1917,6 +1917,14 @@
         <source>Energy Ledger</source>
         <translation>Balance de energía</translation>
     </message>
+    <message>
+        <source>Trace Point</source>
+        <translation>Trazar punto</translation>
+    </message>
+    <message>
+        <source>Click a point on a body to draw the path it takes (a wheel&apos;s rim: a cycloid); click it again, or Esc, to stop</source>
+        <translation>Haga clic en un punto de un cuerpo para dibujar su trayectoria (en el borde de una rueda: una cicloide); otro clic o Esc la detiene</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>

@@ -297,6 +297,18 @@ void CanvasInstruments::invalidateTrailPictures()
 
 void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
 {
+    for (TracedPoint& traced : m_traced) {
+        for (const StepSample& sample : samples) {
+            // Recorded before a body came or went (another scene), or along a run already recorded.
+            if (sample.centres.size() != m_tracedBodyCount || sample.angles.size() != m_tracedBodyCount ||
+                traced.body >= m_tracedBodyCount || (!traced.trail.empty() && traced.trail.back().step >= sample.step))
+                continue;
+            const Vec2 at = sample.centres[traced.body] + rotate(traced.local, sample.angles[traced.body]);
+            traced.trail.push_back({sample.step, toPoint(at)});
+            if (traced.trail.size() > constants::kMaxTrailPoints)
+                traced.trail.pop_front();
+        }
+    }
     if (!m_trails)
         return;
     const std::size_t most =
@@ -331,6 +343,10 @@ void CanvasInstruments::discardAfter(std::int64_t step)
         while (!points.empty() && points.back().step > step)
             points.pop_back();
     }
+    for (TracedPoint& traced : m_traced) {
+        while (!traced.trail.empty() && traced.trail.back().step > step)
+            traced.trail.pop_back();
+    }
     invalidateTrailPictures();
     emit changed();
 }
@@ -340,6 +356,8 @@ void CanvasInstruments::refresh()
     const model::World& world = m_runner.world();
     if (m_trails && m_trailPoints.size() != world.bodies.size())
         startTrails(); // a body came or went: indices moved, start afresh
+    if (!m_traced.empty() && m_tracedBodyCount != world.bodies.size())
+        clearTracedPoints(); // the same: the points' bodies are no longer where they were
     const bool forces = drawsKindAnywhere(VectorKind::Acceleration) || drawsKindAnywhere(VectorKind::NetForce) ||
                         drawsKindAnywhere(VectorKind::ForceParts);
     if (forces)
@@ -351,6 +369,7 @@ void CanvasInstruments::refresh()
 
 void CanvasInstruments::clear()
 {
+    clearTracedPoints();
     m_bodyShown.clear();
     m_trailPoints.clear();
     invalidateTrailPictures();
@@ -457,6 +476,96 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
         for (const QPointF& dot : dots)
             painter.drawEllipse(dot, dotRadius, dotRadius);
     }
+}
+
+void CanvasInstruments::setTracedPoint(std::uint32_t body, const Vec2& local)
+{
+    const model::World& world = m_runner.world();
+    if (body >= world.bodies.size())
+        return;
+    if (!m_traced.empty() && m_tracedBodyCount != world.bodies.size())
+        m_traced.clear();
+    const bool sampling = m_traced.empty();
+    m_tracedBodyCount = world.bodies.size();
+    std::erase_if(m_traced, [&](const TracedPoint& traced) { return traced.body == body; });
+    TracedPoint& traced = m_traced.emplace_back();
+    traced.body = body;
+    traced.local = local;
+    traced.trail.push_back({world.stepCount, toPoint(worldPoint(body, local))});
+    if (sampling && !m_trails)
+        emit samplingChanged();
+    emit changed();
+}
+
+bool CanvasInstruments::clearTracedPoint(std::uint32_t body)
+{
+    if (std::erase_if(m_traced, [&](const TracedPoint& traced) { return traced.body == body; }) == 0)
+        return false;
+    if (m_traced.empty() && !m_trails)
+        emit samplingChanged();
+    emit changed();
+    return true;
+}
+
+void CanvasInstruments::clearTracedPoints()
+{
+    if (m_traced.empty())
+        return;
+    m_traced.clear();
+    if (!m_trails)
+        emit samplingChanged();
+    emit changed();
+}
+
+Vec2 CanvasInstruments::worldPoint(std::uint32_t body, const Vec2& local) const
+{
+    const model::BodyState& state = m_runner.world().bodies.at(body).state;
+    return state.position + rotate(local, state.angle);
+}
+
+void CanvasInstruments::paintTracedPoints(QPainter& painter)
+{
+    const model::World& world = m_runner.world();
+    if (m_traced.empty() || m_tracedBodyCount != world.bodies.size())
+        return;
+    const QTransform toPixels = painter.worldTransform();
+    painter.save();
+    painter.resetTransform();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const double dotRadius = m_lineScale * constants::kTrailDotRadiusPx;
+    for (const TracedPoint& traced : m_traced) {
+        // As a trail: points within a pixel of the last one left out, a dot every trailDotSteps()
+        // steps that does not overlap the last, and nothing after the step shown (a scrub back).
+        QPolygonF& line = m_lineBuffer;
+        std::vector<QPointF>& dots = m_dotBuffer;
+        line.clear();
+        dots.clear();
+        for (const TrailPoint& point : traced.trail) {
+            if (point.step > world.stepCount)
+                break;
+            const QPointF px = toPixels.map(point.position);
+            if (line.isEmpty() || squaredDistance(line.back(), px) >= kTrailMinSegmentPx * kTrailMinSegmentPx)
+                line << px;
+            if (point.step % m_dotSteps == 0 &&
+                (dots.empty() || squaredDistance(dots.back(), px) >= 4 * dotRadius * dotRadius))
+                dots.push_back(px);
+        }
+        const QPointF now = toPixels.map(toPoint(worldPoint(traced.body, traced.local)));
+        line << now;
+        painter.setPen(QPen(constants::kTracedPointColor, m_lineScale * constants::kTracedPointWidthPx));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPolyline(line);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(constants::kTracedPointColor.darker());
+        for (const QPointF& dot : dots)
+            painter.drawEllipse(dot, dotRadius, dotRadius);
+        // The point itself: a ring, so that the body under it still shows.
+        painter.setPen(QPen(constants::kTracedPointColor, m_lineScale * constants::kTracedPointWidthPx));
+        painter.setBrush(Qt::NoBrush);
+        const double ring = m_lineScale * constants::kTracedPointRingPx;
+        painter.drawEllipse(now, ring, ring);
+    }
+    painter.restore();
 }
 
 void CanvasInstruments::paintVectors(QPainter& painter) const

@@ -44,6 +44,14 @@ struct TrailPoint {
     QPointF position; ///< m
 };
 
+/// A point fixed on a body, whose path is drawn as a trail of its own (the Trace Point tool): a
+/// wheel's rim point draws a cycloid where its centre draws a line.
+struct TracedPoint {
+    std::uint32_t body = 0; ///< index into World::bodies
+    Vec2 local = Vec2::Zero(); ///< the point in the body's frame (from its centre of mass, unturned), m
+    std::deque<TrailPoint> trail; ///< where it was after each step, oldest first
+};
+
 /// The canvas's measuring overlays for one SimulationRunner's world.
 ///
 /// Arrows: each kind shown (setShowVector(), the View menu) is drawn for every dynamic body (or only
@@ -103,8 +111,24 @@ public:
     /// Body i's trail, oldest first (empty when trails are off or i is out of range).
     const std::deque<TrailPoint>& trail(std::size_t body) const;
 
-    /// What the trails need recorded after each step.
-    bool needsCentres() const { return m_trails; }
+    /// Traces the point `local` (in the body's frame, m) of body `body`: its path is drawn from
+    /// where it is now, with dots as the trails have, whether trails are on or not. A body has one
+    /// traced point at most: a new one replaces the old. Not an edit (as trails are not); a new
+    /// scene, or a body added or deleted, forgets every traced point.
+    void setTracedPoint(std::uint32_t body, const Vec2& local);
+    /// Stops tracing body `body`'s point; false when it had none.
+    bool clearTracedPoint(std::uint32_t body);
+    /// Stops tracing every point.
+    void clearTracedPoints();
+    /// The traced points, in the order they were set.
+    const std::vector<TracedPoint>& tracedPoints() const { return m_traced; }
+    /// Where body `body`'s point `local` is in the world shown now, m.
+    Vec2 worldPoint(std::uint32_t body, const Vec2& local) const;
+    /// Paints the traced points' paths and a ring on each point; `painter` is in scene coordinates.
+    void paintTracedPoints(QPainter& painter);
+
+    /// What the trails and traced points need recorded after each step.
+    bool needsCentres() const { return m_trails || !m_traced.empty(); }
 
     /// The forces of the state shown (empty when no force or acceleration arrow is shown).
     const std::vector<controller::BodyForces>& forces() const { return m_forces; }
@@ -191,6 +215,8 @@ private:
     QPolygonF m_lineBuffer;
     std::vector<QPointF> m_dotBuffer;
     std::vector<controller::BodyForces> m_forces;
+    std::vector<TracedPoint> m_traced;
+    std::size_t m_tracedBodyCount = 0; ///< the world's bodies when the points were set
 };
 
 } // namespace impetus::view

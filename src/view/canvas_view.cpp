@@ -15,6 +15,7 @@
 #include "view/tools/measure_tools.h"
 #include "view/tools/polygon_tool.h"
 #include "view/tools/probe_tool.h"
+#include "view/tools/trace_point_tool.h"
 #include "view/tools/rotate_tool.h"
 #include "view/tools/select_tool.h"
 #include "view/tools/spring_tool.h"
@@ -172,6 +173,7 @@ void CanvasView::setDocument(SceneDocument& document)
     m_tools.push_back(std::make_unique<RulerTool>(document, *this));
     m_tools.push_back(std::make_unique<ProtractorTool>(document, *this));
     m_tools.push_back(std::make_unique<ProbeTool>(document, *this));
+    m_tools.push_back(std::make_unique<TracePointTool>(document, *this));
     m_tool = m_tools.front().get();
     viewport()->setCursor(m_tool->cursorShape());
     connect(m_document, &SceneDocument::selectionChanged, this, &CanvasView::showSelection);
@@ -667,7 +669,9 @@ void CanvasView::wheelEvent(QWheelEvent* event)
 
 void CanvasView::drawForeground(QPainter* painter, const QRectF&)
 {
-    // Arrows over the bodies, the tool's overlay over them, and the legend over everything.
+    // Traced points' paths and arrows over the bodies, the tool's overlay over them, and the
+    // legend over everything.
+    m_instruments->paintTracedPoints(*painter);
     m_instruments->paintVectors(*painter);
     if (m_tool) {
         painter->save();

@@ -303,6 +303,10 @@ void MainWindow::createToolActions()
         {ToolKind::Probe, tr("Probe"), Qt::Key_I,
          tr("Click a body to read its position, velocity, energies and collisions as it moves"),
          QStringLiteral("probe")},
+        {ToolKind::TracePoint, tr("Trace Point"), Qt::Key_X,
+         tr("Click a point on a body to draw the path it takes (a wheel's rim: a cycloid); click it again, or "
+            "Esc, to stop"),
+         QStringLiteral("trace-point")},
     };
     m_toolGroup = new QActionGroup(this);
     m_toolGroup->setExclusive(true);

@@ -9,8 +9,11 @@ StepSample takeSample(const model::World& world, const SampleRequest& request)
     sample.time = world.time;
     if (request.centres) {
         sample.centres.reserve(world.bodies.size());
-        for (const model::Body& body : world.bodies)
+        sample.angles.reserve(world.bodies.size());
+        for (const model::Body& body : world.bodies) {
             sample.centres.push_back(body.state.position);
+            sample.angles.push_back(body.state.angle);
+        }
     }
     sample.bodies.reserve(request.bodies.size());
     for (const std::uint32_t index : request.bodies) {

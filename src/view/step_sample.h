@@ -17,7 +17,7 @@ namespace impetus::view {
 
 /// What to record after each step. An empty request records nothing (and costs nothing).
 struct SampleRequest {
-    bool centres = false; ///< every body's centre of mass (trails)
+    bool centres = false; ///< every body's centre of mass and angle (trails, traced points)
     std::vector<std::uint32_t> bodies; ///< the bodies whose readout is recorded (graphs), by index
     bool totals = false; ///< the world's energies, momentum and collision count (graphs)
     /// The energy ledger's lines (the ledger chart): the steps are booked by cause while it is set.
@@ -45,6 +45,8 @@ struct StepSample {
     std::int64_t step = 0; ///< World::stepCount after the step
     double time = 0; ///< World::time after the step, s
     std::vector<Vec2> centres; ///< per body (request.centres), m; empty otherwise
+    /// Per body with the centres, rad: with them, where any point fixed on a body is (traced points).
+    std::vector<double> angles;
     /// Per requested body that exists, in the request's order.
     std::vector<BodySample> bodies;
     WorldTotals totals; ///< meaningful with request.totals

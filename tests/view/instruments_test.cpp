@@ -16,6 +16,7 @@
 #include "view/simulation_runner.h"
 #include "view/tools/measure_tools.h"
 #include "view/tools/probe_tool.h"
+#include "view/tools/trace_point_tool.h"
 #include "view/timeline.h"
 #include "view/view_constants.h"
 
@@ -38,6 +39,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 #include <set>
 
 using impetus::view::CanvasInstruments;
@@ -96,6 +98,7 @@ private slots:
     void probeFollowsAFallingBall();
     void velocityVectorsOfOneBodyFromThePane();
     void accelerationForceAndMomentumArrowsPointAlongTheirVectors();
+    void tracePointDrawsACycloid();
     void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
@@ -712,6 +715,89 @@ void InstrumentsTest::accelerationForceAndMomentumArrowsPointAlongTheirVectors()
         window.vectorAction(arrow.kind)->trigger();
         QCOMPARE(test::pixelsNear(canvas.viewport()->grab().toImage(), arrow.colour, nullptr, around), 0);
     }
+}
+
+// Trace Point (X), as a user traces a wheel's rim: a ball sent along at v and spinning at
+// ω = −v/r, as a wheel rolls, in zero gravity; a click on its rim fixes the point there; after a
+// second of running the point's path is the cycloid x = vt − r·sin(vt/r), y = −r·cos(vt/r) about
+// the starting centre (for the point at the bottom; in general c(t) + R(ωt)·p), step by step,
+// drawn in its colour; a click on the point stops tracing it, and Esc stops them all.
+void InstrumentsTest::tracePointDrawsACycloid()
+{
+    const double v = 2;   // m/s
+    const double r = 0.5; // m
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body wheel = test::makeBody("wheel", model::Circle{r}, impetus::Vec2(0, 0));
+    wheel.state.velocity = impetus::Vec2(v, 0);
+    wheel.state.angularVelocity = -v / r;
+    world.bodies.push_back(wheel);
+    world.bodies.push_back(test::makeBody("marker", model::Box{0.2, 0.2}, impetus::Vec2(3, 1.5), true));
+    MainWindow window;
+    window.setScene(world, QStringLiteral("wheel"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    CanvasInstruments& instruments = canvas.instruments();
+    QVERIFY(!window.runner().sampleRequest().centres);
+
+    QTest::keyClick(viewport, Qt::Key_X);
+    QVERIFY(dynamic_cast<impetus::view::TracePointTool*>(canvas.tool()));
+    // Just inside the rim, at the bottom.
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(0, -0.95 * r)).toPoint());
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    const impetus::Vec2 local = instruments.tracedPoints().front().local;
+    const double pixel = 1 / canvas.pixelsPerMetre();
+    QVERIFY2((local - impetus::Vec2(0, -0.95 * r)).norm() < pixel,
+             qPrintable(QStringLiteral("(%1, %2)").arg(local.x()).arg(local.y())));
+    QVERIFY(window.runner().sampleRequest().centres); // the steps are recorded for it
+
+    const double h = window.runner().world().settings.timeStep;
+    for (int i = 0; i < 24; ++i)
+        window.runner().stepBy(10);
+    const std::deque<impetus::view::TrailPoint>& path = instruments.tracedPoints().front().trail;
+    QCOMPARE(path.size(), std::size_t{241}); // where it was clicked, and after each of 240 steps
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        const double t = static_cast<double>(k) * h;
+        const double turn = -v / r * t;
+        // c(t) + R(ωt)·p: for p = (0, −r) the cycloid (vt − r·sin(vt/r), −r·cos(vt/r)).
+        const impetus::Vec2 expected = impetus::Vec2(v * t, 0) + impetus::rotate(local, turn);
+        QCOMPARE(path[k].step, static_cast<std::int64_t>(k));
+        QVERIFY2(std::abs(path[k].position.x() - expected.x()) < 1e-9 &&
+                     std::abs(path[k].position.y() - expected.y()) < 1e-9,
+                 qPrintable(QStringLiteral("step %1: (%2, %3) against (%4, %5)")
+                                .arg(k)
+                                .arg(path[k].position.x())
+                                .arg(path[k].position.y())
+                                .arg(expected.x())
+                                .arg(expected.y())));
+    }
+    // The arch's top: half a turn in, the point is at the top of the wheel, 2·0.95·r above where it began.
+    const std::size_t half = static_cast<std::size_t>(std::llround(std::numbers::pi * r / v / h));
+    QVERIFY(std::abs(path[half].position.y() - 0.95 * r) < 0.01);
+
+    // Drawn: the path in its colour, on the canvas.
+    const QImage drawn = viewport->grab().toImage();
+    QVERIFY2(test::pixelsNear(drawn, constants::kTracedPointColor) > 100,
+             qPrintable(QString::number(test::pixelsNear(drawn, constants::kTracedPointColor))));
+
+    // Back on the timeline and Play from there: the path forgets what came after.
+    window.timeline().seek(120);
+    window.runner().play();
+    window.runner().pause();
+    QCOMPARE(instruments.tracedPoints().front().trail.back().step, 120);
+
+    // A click on the traced point stops tracing it; a new one and Esc, all.
+    const impetus::Vec2 now = instruments.worldPoint(0, local);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(now.x(), now.y())).toPoint());
+    QVERIFY(instruments.tracedPoints().empty());
+    QVERIFY(!window.runner().sampleRequest().centres);
+    const impetus::Vec2 centre = window.runner().world().bodies[0].state.position;
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(centre.x() + 0.3, centre.y())).toPoint());
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    QTest::keyClick(viewport, Qt::Key_Escape);
+    QVERIFY(instruments.tracedPoints().empty());
+    QCOMPARE(test::pixelsNear(viewport->grab().toImage(), constants::kTracedPointColor), 0);
 }
 
 void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()

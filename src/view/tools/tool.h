@@ -31,6 +31,7 @@ enum class ToolKind {
     Ruler, ///< click two points (or drag): the distance between them, m
     Protractor, ///< click a vertex and a point on each arm: the angle between them, degrees
     Probe, ///< click a body: its live readout in a label that follows it
+    TracePoint, ///< click a point on a body: its path is drawn as the body moves
 };
 
 /// A mouse event as a tool sees it: where it happened on the canvas and in the scene.
