@@ -33,6 +33,7 @@
 #include <QScrollArea>
 #include <QTemporaryDir>
 #include <QValueAxis>
+#include <QXYSeries>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
@@ -93,6 +94,7 @@ private slots:
     void graphOfAFallingBodysVyHasSlopeMinusG();
     void graphExportsAPictureAndFollowsTheTimeline();
     void pendulumPeriodReadOffTheGraphToAMillisecond();
+    void twoGraphsAtOnceWithAPhasePlotOfTheSpring();
     void rulerBetweenTwoClicksReadsTheDistance();
     void protractorReadsTheAngle();
     void probeFollowsAFallingBall();
@@ -454,6 +456,66 @@ void InstrumentsTest::pendulumPeriodReadOffTheGraphToAMillisecond()
     QTest::mouseClick(view->viewport(), Qt::RightButton, {}, pixelOf(crossings[3], 0));
     QVERIFY(!graph->isZoomed());
     QVERIFY(timeAxis->min() <= 0 && timeAxis->max() >= graph->records().back().time);
+}
+
+// Two graphs at once, as a teacher sets them up for the spring example (a 1 kg puck on a spring of
+// k = 10 N/m to the table's centre, released 1 m out with 1.5 m/s sideways): x against time, and
+// a phase plot of vx against x chosen in the second graph's boxes. Along x the puck is a harmonic
+// oscillator, x = cos ωt with ω = √(k/m): the first graph is that cosine, and the phase plot the
+// ellipse x² + (vx/ω)² = 1, record by record and point by point of the plotted series.
+void InstrumentsTest::twoGraphsAtOnceWithAPhasePlotOfTheSpring()
+{
+    MainWindow window;
+    QVERIFY(window.openScene(QStringLiteral(":/examples/spring.json")).isEmpty());
+    window.resize(1200, 800);
+    QVERIFY(showActive(window));
+    const std::optional<model::BodyId> puck = window.runner().world().findBody("puck");
+    QVERIFY(puck.has_value());
+    const double omega = std::sqrt(10.0 / 1.0);
+    window.document().setSelection(impetus::view::Selection{{static_cast<int>(puck->index)}, {}, {}});
+    window.newGraphAction()->trigger();
+    window.newGraphAction()->trigger();
+    QCOMPARE(window.graphPanels().size(), std::size_t{2});
+    GraphPanel* overTime = window.graphPanels()[0];
+    GraphPanel* phase = window.graphPanels()[1];
+    const auto choose = [](GraphPanel* graph, const char* box, const QString& text) {
+        auto* combo = graph->findChild<QComboBox*>(QString::fromLatin1(box));
+        const int at = combo ? combo->findText(text) : -1;
+        if (at < 0)
+            return false;
+        combo->setCurrentIndex(at);
+        emit combo->activated(at);
+        return true;
+    };
+    QVERIFY(choose(overTime, "graphY", QStringLiteral("x (m)")));
+    QVERIFY(choose(phase, "graphY", QStringLiteral("vx (m/s)")));
+    QVERIFY(choose(phase, "graphX", QStringLiteral("x (m)")));
+    QCOMPARE(phase->title(), QStringLiteral("vx against x of puck"));
+    QTRY_VERIFY(overTime->chartView()->isVisible() && phase->chartView()->isVisible());
+
+    // Two periods, 2·2π/ω = 3.97 s.
+    const double h = window.runner().world().settings.timeStep;
+    const int steps = static_cast<int>(std::ceil(2 * 2 * std::numbers::pi / omega / h));
+    for (int done = 0; done < steps; done += 240)
+        window.runner().stepBy(std::min(240, steps - done));
+    QCOMPARE(overTime->records().size(), static_cast<std::size_t>(steps) + 1);
+    QCOMPARE(phase->records().size(), static_cast<std::size_t>(steps) + 1);
+    for (const impetus::view::GraphRecord& r : overTime->records()) {
+        QVERIFY2(std::abs(impetus::view::valueOf(GraphQuantity::X, r) - std::cos(omega * r.time)) < 1e-6,
+                 qPrintable(QString::number(r.time)));
+    }
+    // The plotted series of the phase plot: its points are (x, vx), on the ellipse.
+    auto* series = qobject_cast<QXYSeries*>(phase->chartView()->chart()->series().front());
+    QVERIFY(series);
+    const QList<QPointF> points = series->points();
+    QCOMPARE(points.size(), static_cast<qsizetype>(steps) + 1);
+    double widest = 0;
+    for (const QPointF& p : points) {
+        const double onEllipse = p.x() * p.x() + (p.y() / omega) * (p.y() / omega);
+        QVERIFY2(std::abs(onEllipse - 1) < 1e-6, qPrintable(QStringLiteral("(%1, %2)").arg(p.x()).arg(p.y())));
+        widest = std::max(widest, std::abs(p.y()));
+    }
+    QVERIFY(std::abs(widest - omega) < 1e-3); // the vx semi-axis: ω·A
 }
 
 void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
