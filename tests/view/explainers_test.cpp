@@ -59,6 +59,8 @@ private slots:
     void rotatedCornerIntoAFace();
     void separatedPairShowsItsSeparatingAxis();
     void circleAndBoxUseTheClosestFeature();
+    void ellipseOnABoxSaysItUsesGjkWithTheDepth();
+    void concavePolygonShowsEachPairOfPieces();
     void inspectorReproducesTheLoggedImpulse();
 
 private:
@@ -238,6 +240,60 @@ void ExplainersTest::circleAndBoxUseTheClosestFeature()
     QVERIFY2(explainer->panelText().contains(QStringLiteral("Least overlap")) &&
                  explainer->panelText().contains(QStringLiteral("100.000 mm")),
              qPrintable(explainer->panelText()));
+}
+
+// An ellipse has no faces: the panel says that GJK and EPA found the contact, and gives EPA's
+// depth and normal, which are the narrow phase's. An ellipse of semi-axes 0.6 × 0.3 m whose centre
+// is 0.25 m above a slab's top face overlaps it by 50 mm, straight down.
+void ExplainersTest::ellipseOnABoxSaysItUsesGjkWithTheDepth()
+{
+    model::World world = pairWorld(test::makeBody("egg", model::Ellipse{0.6, 0.3}, Vec2(0, 0.25)),
+                                   test::makeBody("slab", model::Box{4, 1}, Vec2(0, -0.5), true));
+    MainWindow window;
+    SatExplainer* explainer = openOn(window, world, Vec2(0, 0.3), Vec2(-1.5, -0.5));
+    QVERIFY(explainer != nullptr);
+    const controller::PiecePairTrace& pair = *explainer->current();
+    QCOMPARE(pair.trace.method, controller::TraceMethod::Gjk);
+    QVERIFY(pair.trace.result.count > 0);
+    const double depth = -pair.trace.result.points[0].separation;
+    QVERIFY2(std::abs(depth - 0.05) < 1e-5, qPrintable(QString::number(depth, 'g', 12))); // EPA to 0.001 mm
+    QVERIFY((pair.trace.result.normal - Vec2(0, -1)).norm() < 1e-5); // from the ellipse (A) into the slab
+    const QString text = explainer->panelText();
+    QVERIFY2(text.contains(QStringLiteral("GJK and EPA")) && text.contains(QStringLiteral("no axes to test")),
+             qPrintable(text));
+    // The panel's depth is the trace's, in mm to three decimals.
+    QVERIFY2(text.contains(QStringLiteral("depth %1 mm").arg(depth * 1000, 0, 'f', 3)), qPrintable(text));
+}
+
+// A concave polygon is its convex pieces: an L of two pieces across a box gives one pair per
+// pair of pieces, "pair 1 of 2" then "pair 2 of 2", and N steps through the first pair's axes
+// into the second's; each pair's numbers are the narrow phase's for those two pieces.
+void ExplainersTest::concavePolygonShowsEachPairOfPieces()
+{
+    // An L, 2 m wide and 2 m tall, its arms 0.6 m thick, standing on a slab it sinks 0.1 m into.
+    model::Polygon ell;
+    ell.vertices = {Vec2(0, 0), Vec2(2, 0), Vec2(2, 0.6), Vec2(0.6, 0.6), Vec2(0.6, 2), Vec2(0, 2)};
+    model::World world = pairWorld(test::makeBody("L", ell, Vec2(0, 0)),
+                                   test::makeBody("slab", model::Box{6, 1}, Vec2(0, -0.5), true));
+    // The body's frame has its origin at the L's centre of mass, geometry.centroidOffset from the
+    // corner the vertices start at: place the corner at (−1, −0.1), the foot 0.1 m in the slab.
+    const Vec2 offset = world.bodies[0].geometry.centroidOffset;
+    world.bodies[0].state.position = Vec2(-1, -0.1) + offset;
+    const Vec2 foot = Vec2(-1, -0.1) + Vec2(1, 0.3); // the middle of the foot
+    MainWindow window;
+    SatExplainer* explainer = openOn(window, world, foot, Vec2(2.5, -0.5));
+    QVERIFY(explainer != nullptr);
+    QCOMPARE(explainer->traces().size(), std::size_t{2});
+    QVERIFY2(explainer->panelText().contains(QStringLiteral("(pair 1 of 2)")), qPrintable(explainer->panelText()));
+    for (const controller::PiecePairTrace& pair : explainer->traces())
+        checkAgainstNarrowPhase(pair);
+    // Through the first pair's axes and its summary: the second pair.
+    const std::size_t firstAxes = explainer->traces()[0].trace.axes.size();
+    for (std::size_t k = 0; k <= firstAxes; ++k)
+        QTest::keyClick(&window.canvas(), Qt::Key_N);
+    QVERIFY2(explainer->panelText().contains(QStringLiteral("(pair 2 of 2)")), qPrintable(explainer->panelText()));
+    QTest::keyClick(&window.canvas(), Qt::Key_P);
+    QVERIFY2(explainer->panelText().contains(QStringLiteral("(pair 1 of 2)")), qPrintable(explainer->panelText()));
 }
 
 void ExplainersTest::inspectorReproducesTheLoggedImpulse()
