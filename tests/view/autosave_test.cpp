@@ -1,5 +1,6 @@
 // Autosave and recovery (issue 16, item 5): the real `impetus` is killed with SIGKILL in the middle
-// of a run, and the next start offers its work back. Every autosave goes to a temporary folder:
+// of a run, on an X display of Xvfb's own (offscreen where Xvfb is missing), and the next start
+// offers its work back. Every autosave goes to a temporary folder:
 // the children get their own XDG_DATA_HOME (QStandardPaths::AppDataLocation follows it), the
 // in-process windows a folder passed in, so no test touches the user's own.
 
@@ -20,6 +21,7 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -56,12 +58,80 @@ constexpr int kLongAgoYear = 2001;
 
 std::chrono::milliseconds aMinute() { return std::chrono::minutes(1); }
 
-/// `impetus --run SCENE` with its app data (and settings) under `home`, autosaving every 0.2 s.
+/// Longest wait for Xvfb to open its display, ms.
+constexpr int kXvfbStartMs = 10000;
+
+/// The Xvfb that xvfbDisplay() started, if any.
+std::unique_ptr<QProcess>& xvfbProcess()
+{
+    static std::unique_ptr<QProcess> process;
+    return process;
+}
+
+/// An X server of the test's own (Xvfb, the test command installs it), so that the children run as
+/// on a desktop, through the xcb platform; started at the first call, stopped by stopXvfb().
+/// Returns the display (":93"), or nothing where Xvfb is missing or does not start: the children
+/// then run offscreen.
+std::optional<QString> xvfbDisplay()
+{
+    static std::optional<QString> display;
+    static bool tried = false;
+    if (tried)
+        return display;
+    tried = true;
+    const QString xvfb = QStandardPaths::findExecutable(QStringLiteral("Xvfb"));
+    if (xvfb.isEmpty()) {
+        qWarning("Xvfb not found: the killed app runs offscreen");
+        return display;
+    }
+    // A display number no other server holds: its socket does not exist.
+    for (int number = 90 + static_cast<int>(QCoreApplication::applicationPid() % 200); number < 1000; ++number) {
+        const QString socket = QStringLiteral("/tmp/.X11-unix/X%1").arg(number);
+        if (QFileInfo::exists(socket) || QFileInfo::exists(QStringLiteral("/tmp/.X%1-lock").arg(number)))
+            continue;
+        auto process = std::make_unique<QProcess>();
+        process->start(xvfb, {QStringLiteral(":%1").arg(number), QStringLiteral("-screen"), QStringLiteral("0"),
+                              QStringLiteral("1280x800x24"), QStringLiteral("-nolisten"), QStringLiteral("tcp")});
+        if (!process->waitForStarted())
+            break;
+        QElapsedTimer clock;
+        clock.start();
+        while (!QFileInfo::exists(socket) && process->state() == QProcess::Running && clock.elapsed() < kXvfbStartMs)
+            QTest::qWait(50);
+        if (QFileInfo::exists(socket) && process->state() == QProcess::Running) {
+            xvfbProcess() = std::move(process);
+            display = QStringLiteral(":%1").arg(number);
+            return display;
+        }
+        process->kill();
+        process->waitForFinished();
+    }
+    qWarning("Xvfb did not start: the killed app runs offscreen");
+    return display;
+}
+/// Stops the Xvfb that xvfbDisplay() started.
+void stopXvfb()
+{
+    if (std::unique_ptr<QProcess>& process = xvfbProcess()) {
+        process->terminate();
+        if (!process->waitForFinished())
+            process->kill();
+        process.reset();
+    }
+}
+
+/// `impetus --run SCENE` with its app data (and settings) under `home`, autosaving every 0.2 s, on
+/// the test's X display (xvfbDisplay()), or offscreen where there is none.
 std::unique_ptr<QProcess> startApp(const QString& home, const QString& scene)
 {
     auto process = std::make_unique<QProcess>();
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    if (const std::optional<QString> display = xvfbDisplay()) {
+        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+        environment.insert(QStringLiteral("DISPLAY"), *display);
+    } else {
+        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    }
     environment.insert(QStringLiteral("XDG_DATA_HOME"), home + QStringLiteral("/data"));
     environment.insert(QStringLiteral("XDG_CONFIG_HOME"), home + QStringLiteral("/config"));
     environment.insert(QStringLiteral("IMPETUS_AUTOSAVE_INTERVAL"), QStringLiteral("0.2"));
@@ -123,6 +193,7 @@ class AutosaveTest : public QObject {
     Q_OBJECT
 
 private slots:
+    void cleanupTestCase() { stopXvfb(); }
     void killedAppIsOfferedAndRestoredAndALiveOneIsLeftAlone();
     void cleanQuitRemovesTheAutosaveAndAnUnchangedSceneHasNone();
     void discardDeletesTheAutosave();
@@ -140,6 +211,8 @@ void AutosaveTest::killedAppIsOfferedAndRestoredAndALiveOneIsLeftAlone()
     const QString scenePath = QDir(home.path()).filePath(QStringLiteral("falling ball.json"));
     QVERIFY(test::writeFile(scenePath, kFallingBall));
     const QString folder = childAutosaveFolder(home.path());
+    // Where Xvfb is installed (the test command installs it), the children run on its display.
+    QVERIFY(QStandardPaths::findExecutable(QStringLiteral("Xvfb")).isEmpty() || xvfbDisplay().has_value());
 
     // Two Impetus at once on one folder: each autosaves its own run, and the second, starting
     // while the first is alive, does not take the first's autosave for an orphan (it would then
