@@ -9,12 +9,13 @@ IMPETUS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # Build tools, the engine's libraries, Qt for the app, Qt Linguist's tools for the translations
 # (lrelease at build time, the CMake package), fonts so that text renders offscreen, Doxygen, so
 # that the test suite checks that the engine's API reference builds without a warning, and Xvfb,
-# the X server the autosave test runs the real app on before it kills it.
+# the X server the autosave test runs the real app on before it kills it (with xauth, which
+# xvfb-run needs to run the app on a machine without a display).
 IMPETUS_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libqt6svg6 qt6-l10n-tools qt6-tools-dev fonts-dejavu-core
-  doxygen xvfb
+  doxygen xvfb xauth
 )
 
 # What scripts/fuzz needs besides the engine's build tools and libraries: clang 14 and its
