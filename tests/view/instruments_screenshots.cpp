@@ -1,4 +1,4 @@
-// Not a test: the pictures of docs/app.md's probe and tool icons, taken from the real window driven
+// Not a test: the pictures of docs/app.md's probe, Trace Point and tool icons, taken from the real window driven
 // as a user would (keys and clicks). scripts/screenshots runs it under Xvfb.
 // Usage: instruments_screenshots OUTPUT_DIRECTORY
 
@@ -54,6 +54,44 @@ bool probePicture(const QDir& directory)
     QTest::mouseMove(canvas.viewport(), QPoint(canvas.viewport()->width() - 10, canvas.viewport()->height() - 10));
     QApplication::processEvents();
     return impetus::view::test::saveGrab(window, directory, QStringLiteral("instruments-probe.png"));
+}
+
+/// A wheel rolling along the floor with Trace Point on its rim: its centre's trail is a straight
+/// line, the rim point's path a cycloid, with the dots of both.
+bool tracePointPicture(const QDir& directory)
+{
+    namespace model = impetus::model;
+    model::World world;
+    model::Body floor;
+    floor.name = "floor";
+    floor.shape = model::Box{12, 0.4};
+    floor.state.position = impetus::Vec2(0, -0.2);
+    floor.fixed = true;
+    floor.updateDerived();
+    model::Body wheel;
+    wheel.name = "wheel";
+    wheel.shape = model::Circle{0.6};
+    wheel.state.position = impetus::Vec2(-4.5, 0.6);
+    wheel.state.velocity = impetus::Vec2(1.5, 0);
+    wheel.state.angularVelocity = -1.5 / 0.6; // rolling: v = −ω·r
+    wheel.updateDerived();
+    world.bodies = {floor, wheel};
+    MainWindow window;
+    window.setScene(world, QStringLiteral("rolling wheel"));
+    if (!impetus::view::test::showWindowAt(window, kWidth, kHeight))
+        return false;
+    impetus::view::CanvasView& canvas = window.canvas();
+    window.trailsAction()->trigger();
+    QTest::keyClick(canvas.viewport(), Qt::Key_X);
+    // The bottom of the rim, where it touches the floor.
+    QTest::mouseClick(canvas.viewport(), Qt::LeftButton, Qt::NoModifier, canvas.toView(QPointF(-4.5, 0.03)).toPoint());
+    // 5 s of rolling, in frames as a run shows it: two turns and a bit.
+    for (int frame = 0; frame < 300; ++frame)
+        window.runner().stepBy(4);
+    QTest::keyClick(canvas.viewport(), Qt::Key_S);
+    QTest::mouseMove(canvas.viewport(), QPoint(canvas.viewport()->width() - 10, canvas.viewport()->height() - 10));
+    QApplication::processEvents();
+    return impetus::view::test::saveGrab(window, directory, QStringLiteral("instruments-trace-point.png"));
 }
 
 /// A sheet of every tool's and run control's icon, large, each with its name and shortcut as the
@@ -116,5 +154,5 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "no directory %s\n", argv[1]);
         return 2;
     }
-    return probePicture(directory) && iconsPicture(directory) ? 0 : 1;
+    return probePicture(directory) && tracePointPicture(directory) && iconsPicture(directory) ? 0 : 1;
 }
