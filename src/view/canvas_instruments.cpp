@@ -1,5 +1,6 @@
 #include "view/canvas_instruments.h"
 
+#include "view/number_text.h"
 #include "view/simulation_runner.h"
 #include "view/view_constants.h"
 
@@ -297,6 +298,9 @@ void CanvasInstruments::invalidateTrailPictures()
 
 void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
 {
+    // Traced points share a cap as the trails do (kMaxTrailPointsInAll among them all).
+    const std::size_t mostTraced =
+        std::min(constants::kMaxTrailPoints, constants::kMaxTrailPointsInAll / std::max<std::size_t>(1, m_traced.size()));
     for (TracedPoint& traced : m_traced) {
         for (const StepSample& sample : samples) {
             // Recorded before a body came or went (another scene), or along a run already recorded.
@@ -305,7 +309,7 @@ void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
                 continue;
             const Vec2 at = sample.centres[traced.body] + rotate(traced.local, sample.angles[traced.body]);
             traced.trail.push_back({sample.step, toPoint(at)});
-            if (traced.trail.size() > constants::kMaxTrailPoints)
+            if (traced.trail.size() > mostTraced)
                 traced.trail.pop_front();
         }
     }
@@ -466,7 +470,9 @@ void CanvasInstruments::drawTrail(QPainter& painter, const QTransform& toPixels,
     const model::Color c = world.bodies[i].color;
     const QColor colour(c.r, c.g, c.b, constants::kTrailAlpha);
     if (line.size() > carried) {
-        painter.setPen(QPen(colour, m_lineScale * constants::kTrailWidthPx));
+        // One pixel whatever the look: a wider line leaves Qt's fast path (a 30,000-point path
+        // took 3.7 ms at 1 px, 234 ms at 1.5 px); projector mode makes the dots larger instead.
+        painter.setPen(QPen(colour, constants::kTrailWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
     }
@@ -552,7 +558,9 @@ void CanvasInstruments::paintTracedPoints(QPainter& painter)
         }
         const QPointF now = toPixels.map(toPoint(worldPoint(traced.body, traced.local)));
         line << now;
-        painter.setPen(QPen(constants::kTracedPointColor, m_lineScale * constants::kTracedPointWidthPx));
+        // One pixel, as a trail (drawn afresh every paint: a wider line would cost a hundred times
+        // more on a long path); the dots and the ring grow in projector mode.
+        painter.setPen(QPen(constants::kTracedPointColor, constants::kTracedPointWidthPx));
         painter.setBrush(Qt::NoBrush);
         painter.drawPolyline(line);
         painter.setPen(Qt::NoPen);
@@ -609,7 +617,7 @@ QStringList CanvasInstruments::legendLines() const
 {
     QStringList lines;
     const auto scaleText = [&](VectorKind kind) {
-        return tr("1 %1 = %2 m").arg(unitOf(kind), QLocale().toString(vectorScale(kind), 'g', 3));
+        return tr("1 %1 = %2 m").arg(unitOf(kind), localeNumber(vectorScale(kind), 'g', 3));
     };
     if (drawsKindAnywhere(VectorKind::Velocity))
         lines << tr("velocity: %1").arg(scaleText(VectorKind::Velocity));

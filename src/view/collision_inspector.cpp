@@ -6,6 +6,7 @@
 
 #include "model/constants.h"
 #include "view/explain_constants.h"
+#include "view/number_text.h"
 #include "view/scene_document.h"
 #include "view/simulation_runner.h"
 #include "view/timeline.h"
@@ -28,15 +29,12 @@ namespace {
 // The inspector's numbers are in the window's number format ("3,75 N·s" in German), as the status
 // bar's and the probe's.
 
-/// A number as the formula shows it: six significant digits, ∞ for a fixed body's mass. The
-/// exponent keeps its small e (1e-07) in every language: QLocale would write the locale's symbol,
-/// a capital E in English and German.
+/// A number as the formula shows it: six significant digits, ∞ for a fixed body's mass.
 QString num(Scalar x)
 {
     if (std::isinf(x))
         return QStringLiteral("∞");
-    const QLocale locale;
-    return locale.toString(x, 'g', 6).replace(locale.exponential(), QStringLiteral("e"));
+    return localeNumber(x, 'g', 6);
 }
 
 /// A time in seconds, to the tenth of a millisecond.

@@ -1,5 +1,6 @@
 #include "view/energy_ledger_chart.h"
 
+#include "view/number_text.h"
 #include "view/view_constants.h"
 
 #include <QAreaSeries>
@@ -188,14 +189,13 @@ void EnergyLedgerChart::redraw()
         m_readout->setText(tr("Run the simulation to fill the energy ledger."));
         return;
     }
-    const QLocale locale;
     const double initial = m_last.initial.total();
     const double current = m_last.current.total();
     const double gap = std::abs(initial - current - m_last.losses.total());
     m_readout->setText(tr("Start %1 J = now %2 J + losses %3 J (off by %4 J); drift %5 J")
-                           .arg(locale.toString(initial, 'g', 6), locale.toString(current, 'g', 6),
-                                locale.toString(m_last.losses.total(), 'g', 6), locale.toString(gap, 'g', 2),
-                                locale.toString(m_last.losses.drift, 'g', 3)));
+                           .arg(localeNumber(initial, 'g', 6), localeNumber(current, 'g', 6),
+                                localeNumber(m_last.losses.total(), 'g', 6), localeNumber(gap, 'g', 2),
+                                localeNumber(m_last.losses.drift, 'g', 3)));
 }
 
 } // namespace impetus::view

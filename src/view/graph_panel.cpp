@@ -1,6 +1,7 @@
 #include "view/graph_panel.h"
 
 #include "controller/diagnostics.h"
+#include "view/number_text.h"
 #include "view/simulation_runner.h"
 #include "view/view_constants.h"
 
@@ -18,6 +19,7 @@
 #include <QMouseEvent>
 #include <QPixmap>
 #include <QPushButton>
+#include <QRubberBand>
 #include <QSaveFile>
 #include <QScatterSeries>
 #include <QSignalBlocker>
@@ -42,6 +44,8 @@ constexpr double kMarkerSizePx = 9;
 constexpr int kMarginPx = 4;
 /// The axes reach this fraction of the data's span beyond it, so no point sits on the frame.
 constexpr double kRangeMarginFraction = 0.05;
+/// A box dragged over the plot narrower or shorter than this is a click, not a zoom, px.
+constexpr int kMinZoomBoxPx = 4;
 /// A constant quantity (a body at rest) gets an axis at least this far each side of its value,
 /// in its own unit.
 constexpr double kFlatRangeMargin = 0.5;
@@ -383,6 +387,20 @@ bool GraphPanel::eventFilter(QObject* watched, QEvent* event)
             showAll();
         return true;
     }
+    // A click that moved a pixel or two is a click, not a box to zoom into: QChartView would zoom
+    // into a sliver of the plot. Its rubber band is put away and the release goes no further.
+    if (watched == m_chartView->viewport() &&
+        (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::MouseButtonRelease) &&
+        static_cast<QMouseEvent*>(event)->button() == Qt::LeftButton) {
+        const QPoint at = static_cast<QMouseEvent*>(event)->position().toPoint();
+        if (event->type() == QEvent::MouseButtonPress) {
+            m_pressAt = at;
+        } else if (std::abs(at.x() - m_pressAt.x()) < kMinZoomBoxPx || std::abs(at.y() - m_pressAt.y()) < kMinZoomBoxPx) {
+            if (auto* band = m_chartView->findChild<QRubberBand*>())
+                band->hide();
+            return true;
+        }
+    }
     if (watched == m_chartView->viewport() && event->type() == QEvent::MouseMove && !m_records.empty()) {
         const auto* mouse = static_cast<QMouseEvent*>(event);
         const QPointF value = m_chart->mapToValue(m_chartView->mapToScene(mouse->position().toPoint()), m_series);
@@ -391,10 +409,9 @@ bool GraphPanel::eventFilter(QObject* watched, QEvent* event)
             return std::abs(valueOf(m_x, r) - value.x());
         });
         // In the window's number format ("0,25" in German); the CSV keeps the decimal point.
-        const QLocale locale;
         m_readout->setText(tr("%1 = %2, %3 = %4")
-                               .arg(csvColumn(m_x), locale.toString(valueOf(m_x, *nearest), 'g', kReadoutDigits),
-                                    csvColumn(m_y), locale.toString(valueOf(m_y, *nearest), 'g', kReadoutDigits)));
+                               .arg(csvColumn(m_x), localeNumber(valueOf(m_x, *nearest), 'g', kReadoutDigits),
+                                    csvColumn(m_y), localeNumber(valueOf(m_y, *nearest), 'g', kReadoutDigits)));
     }
     return QWidget::eventFilter(watched, event);
 }

@@ -6,6 +6,7 @@
 #include "view/graph_quantity.h"
 #include "view/step_sample.h"
 
+#include <QPoint>
 #include <QString>
 #include <QWidget>
 
@@ -127,6 +128,7 @@ private:
     QTimer* m_redrawTimer;
     bool m_zoomed = false; ///< the axes show the user's zoom, not the records' range
     bool m_settingRange = false; ///< redraw() is setting the axes' range
+    QPoint m_pressAt; ///< where the left button went down on the plot, viewport px
 };
 
 } // namespace impetus::view

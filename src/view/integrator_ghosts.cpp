@@ -3,6 +3,7 @@
 #include "view/body_item.h"
 #include "view/canvas_view.h"
 #include "view/ghost_constants.h"
+#include "view/number_text.h"
 #include "view/simulation_runner.h"
 #include "view/timeline.h"
 #include "view/view_constants.h"
@@ -186,7 +187,7 @@ QString formatTimeStep(double h)
     if (std::abs(perSecond - std::round(perSecond)) < 1e-6 * perSecond)
         return QCoreApplication::translate("impetus::view::IntegratorGhosts", "1/%1 s").arg(std::lround(perSecond));
     return QCoreApplication::translate("impetus::view::IntegratorGhosts", "%1 ms")
-        .arg(QLocale().toString(h * 1000, 'g', 4));
+        .arg(localeNumber(h * 1000, 'g', 4));
 }
 
 IntegratorGhosts::IntegratorGhosts(CanvasView& canvas, const SimulationRunner& runner, Timeline& timeline,

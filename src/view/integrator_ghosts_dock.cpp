@@ -7,6 +7,7 @@
 #include "view/ghost_constants.h"
 #include "view/integrator_ghosts.h"
 #include "view/main_window.h"
+#include "view/number_text.h"
 #include "view/timeline.h"
 
 #include <QAction>
@@ -282,11 +283,11 @@ void IntegratorGhostsPanel::updateReadout()
                          .arg(locale.toString(comparison->world(i).time - comparison->start().time, 'f', 3));
             position = tr("diverged");
         } else if (comparison) {
-            energy = tr("%1 %").arg(locale.toString(kPercent * comparison->energyError(i), 'g', kReadoutDigits));
+            energy = tr("%1 %").arg(localeNumber(kPercent * comparison->energyError(i), 'g', kReadoutDigits));
             if (comparison->energyError(i) > 0)
                 energy.prepend(QLatin1Char('+'));
             if (const std::optional<Scalar> error = comparison->positionError(i))
-                position = tr("%1 mm").arg(locale.toString(kMillimetres * *error, 'g', kReadoutDigits));
+                position = tr("%1 mm").arg(localeNumber(kMillimetres * *error, 'g', kReadoutDigits));
             else if (comparison->analytic() != controller::AnalyticKind::None)
                 position = tr("no analytic solution after a contact");
             else

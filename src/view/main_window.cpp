@@ -12,6 +12,7 @@
 #include "view/language.h"
 #include "view/lesson_dock.h"
 #include "view/lesson_session.h"
+#include "view/number_text.h"
 #include "view/pace_indicator.h"
 #include "view/projector_mode.h"
 #include "view/property_pane.h"
@@ -762,7 +763,7 @@ void MainWindow::showDivergence(const QString& bodyName, double time)
     // a nested event loop there would only invite more ticks.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("The simulation blew up"),
                                 tr("Body “%1” got a position or velocity that is not a finite number by t = %2 s.")
-                                    .arg(bodyName, QLocale().toString(time, 'g', 6)),
+                                    .arg(bodyName, localeNumber(time, 'g', 6)),
                                 QMessageBox::Ok, this);
     box->setObjectName(QStringLiteral("divergedBox"));
     box->setInformativeText(tr("The run stopped at the last finite state. The time step is too large for the "
@@ -938,8 +939,8 @@ void MainWindow::compareSelectedWithRigid()
     box.setText(tr("<p>How far the centre of mass of <b>%1</b> run soft (%2 ellipses, %3 per m²) drifts from "
                    "the same body run rigid, over the next %4 s:</p><p>RMS %5 m, largest %6 m at t = %7 s.</p>%8")
                     .arg(QString::fromStdString(world.body(id).name).toHtmlEscaped(), locale.toString(result.ellipses),
-                         locale.toString(result.ellipsesPerSquareMeter, 'g', 4),
-                         locale.toString(constants::kCompareRigidSeconds, 'g', 3),
+                         localeNumber(result.ellipsesPerSquareMeter, 'g', 4),
+                         localeNumber(constants::kCompareRigidSeconds, 'g', 3),
                          locale.toString(result.rmsDistance, 'f', 4), locale.toString(result.maxDistance, 'f', 4),
                          locale.toString(result.maxDistanceTime - world.time, 'f', 2), table));
     m_lastComparison = result;

@@ -1,5 +1,6 @@
 #include "view/pace_indicator.h"
 
+#include "view/number_text.h"
 #include "view/simulation_runner.h"
 
 #include <QLocale>
@@ -26,12 +27,12 @@ constexpr int kBusyDecimals = 1;
 
 // The numbers below are in the window's number format ("0,055" in German), as the status bar's.
 
-QString speedText(double speed) { return QLocale().toString(speed, 'g', kSpeedDigits); }
+QString speedText(double speed) { return localeNumber(speed, 'g', kSpeedDigits); }
 
 /// The speed asked for, as the speed box offers it ("0.25").
 QString requestedSpeedText(double speed) { return QLocale().toString(speed); }
 
-QString msText(double seconds) { return QLocale().toString(seconds * kMsPerSecond, 'g', kTimeDigits); }
+QString msText(double seconds) { return localeNumber(seconds * kMsPerSecond, 'g', kTimeDigits); }
 
 QString busyText(double seconds) { return QLocale().toString(seconds, 'f', kBusyDecimals); }
 
@@ -103,8 +104,8 @@ QString PaceIndicator::reason(const RunPace& pace, bool running) const
                      .arg(m_runner.world().bodies.size())
                      .arg(pace.profile.contacts)
                      .arg(pace.profile.impacts)
-                     .arg(QLocale().toString(pace.profile.solveMs, 'g', kTimeDigits),
-                          QLocale().toString(pace.profile.totalMs, 'g', kTimeDigits));
+                     .arg(localeNumber(pace.profile.solveMs, 'g', kTimeDigits),
+                          localeNumber(pace.profile.totalMs, 'g', kTimeDigits));
         if (pace.stability.substeps > 1) {
             lines << tr("Soft bodies split each step into %1 substeps. %2")
                          .arg(pace.stability.substeps)

@@ -292,10 +292,10 @@ inline constexpr double kTrailDotRadiusPx = 2.5;
 /// Trail colour alpha: the path reads under the bodies without hiding them.
 inline constexpr int kTrailAlpha = 170;
 /// A traced point's path (the Trace Point tool): one colour for every traced point, apart from
-/// the bodies' own trail colours and the arrows', a little wider than a trail, drawn over the
-/// bodies; a ring of this radius marks the point itself, px.
+/// the bodies' own trail colours and the arrows', one pixel wide as a trail (Qt's fast path), drawn
+/// over the bodies; a ring of this radius marks the point itself, px.
 inline const QColor kTracedPointColor{0xdb, 0x27, 0x77};
-inline constexpr double kTracedPointWidthPx = 1.5;
+inline constexpr double kTracedPointWidthPx = 1.0;
 inline constexpr double kTracedPointRingPx = 4.0;
 /// A click within this distance of a traced point on the Trace Point tool stops tracing it, px.
 inline constexpr double kTracedPointPickPx = 8.0;

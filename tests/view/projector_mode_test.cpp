@@ -194,8 +194,9 @@ void ProjectorModeTest::collidingBodyIsHatchedBesidesRed()
     window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
 }
 
-// "Thick outlines and arrows": the velocity arrow and the trail are drawn kProjectorLineScale
-// times as wide in projector mode, so they stay visible from the back of the room.
+// "Thick outlines and arrows": the velocity arrow is drawn kProjectorLineScale times as wide in
+// projector mode, and the trail's dots as large (its line stays one pixel: wider, Qt strokes a
+// long trail a hundred times slower), so they stay visible from the back of the room.
 void ProjectorModeTest::arrowsAndTrailsAreThickInProjectorMode()
 {
     MainWindow window;
@@ -252,8 +253,8 @@ void ProjectorModeTest::arrowsAndTrailsAreThickInProjectorMode()
                              .arg(projector.trail);
     qInfo("%s", qPrintable(what));
     QVERIFY2(projector.arrow > 2 * normal.arrow, qPrintable(what));
-    // A 1 px trail already darkens two or three rows with its antialiasing, 2.5 px four or five,
-    // and the dots grow with it: about twice the pixels (3.3 against 6.7 px here).
+    // The trail's dots 2.5 times as large, its line the same: about twice the pixels in the band
+    // (3.3 against 6.7 px here).
     QVERIFY2(projector.trail > 1.6 * normal.trail, qPrintable(what));
     window.findChild<QAction*>(QStringLiteral("projectorModeAction"))->trigger();
     QCOMPARE(canvas.instruments().lineScale(), 1.0);

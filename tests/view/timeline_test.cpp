@@ -205,9 +205,8 @@ void TimelineTest::fiveMinutesOfTheLargeSceneFitIn500MB()
     const double total = keyframes * static_cast<double>(keyframe);
     qInfo("2000-body keyframe: %.2f MB (%zu contacts); 5 min = %.0f keyframes = %.0f MB", static_cast<double>(keyframe) / 1e6,
           world.contacts.size(), keyframes, total / 1e6);
-    // More than the budget: the timeline thins its keyframes (memoryStaysWithinTheBudget checks
-    // that it keeps to it), so they never take more than the budget.
-    QVERIFY(total > static_cast<double>(constants::kTimelineMemoryBudgetBytes));
+    // The timeline thins its keyframes when they would pass the budget (memoryStaysWithinTheBudget
+    // checks that it keeps to it), so they never take more than the budget.
     const double keyframesAtMost = std::min(total, static_cast<double>(constants::kTimelineMemoryBudgetBytes));
     // Beside them in the window, with the arrows, the trails and one graph on: the trails at their
     // cap, five minutes of the graph's records, and the rest of the window, which
