@@ -195,11 +195,24 @@ double CanvasView::pixelsPerMetre() const { return std::abs(transform().m11()); 
 
 void CanvasView::rebuildItems()
 {
-    m_scene->clear();
+    // Only the canvas's own items go: the explainers' and the integrator ghosts' items stay on the
+    // scene with their owners, who still point at them (clearing the whole scene left the Separating
+    // Axes explainer drawing into a deleted item after any edit, and the window crashed).
+    for (QGraphicsItem* item : m_bodyItems)
+        delete item;
+    for (QGraphicsItem* item : m_softItems)
+        delete item;
+    for (QGraphicsItem* item : m_springItems)
+        delete item;
+    for (QGraphicsItem* item : m_jointItems)
+        delete item;
+    for (QGraphicsItem* item : m_anchorItems)
+        delete item;
     m_bodyItems.clear();
     m_springItems.clear();
     m_jointItems.clear();
     m_softItems.clear();
+    m_anchorItems.clear();
 
     const model::World& world = m_runner.world();
     m_bodyItems.reserve(world.bodies.size());
@@ -224,8 +237,10 @@ void CanvasView::rebuildItems()
         item->setEnds(a, b);
         m_scene->addItem(item);
         m_springItems.push_back(item);
-        if (!spring.bodyB)
-            m_scene->addItem(new AnchorItem(b));
+        if (!spring.bodyB) {
+            m_anchorItems.push_back(new AnchorItem(b));
+            m_scene->addItem(m_anchorItems.back());
+        }
     }
     m_jointItems.reserve(world.joints.size());
     for (const model::Joint& joint : world.joints) {
@@ -234,8 +249,10 @@ void CanvasView::rebuildItems()
         item->setEnds(a, b);
         m_scene->addItem(item);
         m_jointItems.push_back(item);
-        if (joint.type == model::JointType::Rod && !joint.bodyB)
-            m_scene->addItem(new AnchorItem(b));
+        if (joint.type == model::JointType::Rod && !joint.bodyB) {
+            m_anchorItems.push_back(new AnchorItem(b));
+            m_scene->addItem(m_anchorItems.back());
+        }
     }
     applyLookToItems();
     showSelection();

@@ -232,6 +232,8 @@ private:
     std::vector<SpringItem*> m_springItems;
     std::vector<JointItem*> m_jointItems;
     std::vector<SoftDetailItem*> m_softItems;
+    /// The fixed points of springs and rods to the world (their own items).
+    std::vector<QGraphicsItem*> m_anchorItems;
     bool m_showSoftEllipses = false;
     bool m_showSoftStrain = false;
     std::vector<std::unique_ptr<Tool>> m_tools;
