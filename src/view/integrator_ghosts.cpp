@@ -26,7 +26,8 @@
 namespace impetus::view {
 
 /// The three ghosts, drawn in scene coordinates (m, y up) over the real bodies. A QGraphicsObject so
-/// that IntegratorGhosts can hold it by QPointer: the canvas deletes every item when it rebuilds.
+/// that IntegratorGhosts can hold it by QPointer, should anything else delete it (the canvas, when
+/// it rebuilds, deletes only its own items).
 class GhostItem : public QGraphicsObject {
 public:
     explicit GhostItem(const IntegratorGhosts& ghosts)
