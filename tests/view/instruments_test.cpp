@@ -4,6 +4,7 @@
 
 #include "support/pendulum_theory.h"
 #include "test_files.h"
+#include "test_graphs.h"
 #include "test_pixels.h"
 #include "test_settings.h"
 #include "test_worlds.h"
@@ -261,12 +262,8 @@ void InstrumentsTest::graphOfAFallingBodysVyHasSlopeMinusG()
         window.runner().stepBy(10);
     QCOMPARE(graph->records().size(), std::size_t{241});
 
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("vy.csv"));
-    QVERIFY(!graph->exportCsv(path));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
-    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    const QStringList lines = test::exportedCsvRows(*graph);
+    QVERIFY(!lines.isEmpty());
     QCOMPARE(lines.front(), QStringLiteral("time,body,vy"));
     QCOMPARE(lines.size(), 242);
     // Least squares over the rows: vy = a + b·t, with b = −g.
@@ -416,12 +413,8 @@ void InstrumentsTest::pendulumPeriodReadOffTheGraphToAMillisecond()
              qPrintable(QStringLiteral("%1 against %2").arg(hovered, 0, 'g', 10).arg(expected, 0, 'g', 10)));
 
     // From the CSV: the rows on either side of each crossing, interpolated.
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("pendulum.csv"));
-    QVERIFY(!graph->exportCsv(path));
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
-    const QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    const QStringList lines = test::exportedCsvRows(*graph);
+    QVERIFY(!lines.isEmpty());
     QCOMPARE(lines.front(), QStringLiteral("time,body,x"));
     std::vector<double> fromCsv;
     double lastT = 0;

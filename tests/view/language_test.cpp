@@ -3,6 +3,7 @@
 // decimal point. Driven as a user would: the menus are read, a value is typed into the pane.
 
 #include "model/scene_io.h"
+#include "test_graphs.h"
 #include "test_settings.h"
 #include "test_worlds.h"
 #include "view/canvas_instruments.h"
@@ -402,12 +403,7 @@ void LanguageTest::readoutsFollowTheLocale()
     static const QRegularExpression hovered(QStringLiteral("^time = 0,[0-9]+; x = 0,[0-9]+$"));
     QVERIFY2(hovered.match(readout->text()).hasMatch(), qPrintable(readout->text()));
     // The CSV it exports keeps the decimal point: its commas separate the columns.
-    QTemporaryDir dir;
-    const QString csvPath = dir.filePath(QStringLiteral("ball.csv"));
-    QVERIFY(!graph->exportCsv(csvPath));
-    QFile csv(csvPath);
-    QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
-    const QStringList rows = QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    const QStringList rows = test::exportedCsvRows(*graph);
     QCOMPARE(rows.size(), 122); // the header and steps 0 to 120
     const QStringList last = rows.last().split(QLatin1Char(','));
     QCOMPARE(last.size(), 3);
