@@ -381,6 +381,7 @@ void ImpetusEngine::step()
     m_profileSum.contacts += last.contacts;
     m_profileSum.impacts += last.impacts;
     m_profileSum.substeps += last.substeps;
+    m_profileSum.collisionPasses += last.collisionPasses;
 }
 
 std::vector<Pose> ImpetusEngine::poses() const

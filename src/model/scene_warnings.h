@@ -20,7 +20,11 @@ namespace impetus::model {
 ///   one solver step: |g|·h² > kSpeculativeMargin, with h the solver step (the time step, split
 ///   into substeps of at most kMaxSolverStep);
 /// - two dynamic bodies whose masses differ more than kMaxContactMassRatio times and that are
-///   joined by a spring or joint, or touch at load time (their bounding circles overlap).
+///   joined by a spring or joint, or touch at load time (their bounding circles overlap);
+/// - a spring so stiff for the bodies it joins that the world's integrator is unstable at the
+///   time step: ω·h above 2 (semi-implicit Euler) or 2√2 (RK4), with ω = √(k/m) and m the ends'
+///   effective mass along the spring, turns included; for explicit Euler, above the ω·h at which
+///   the energy doubles within one period (about 0.11).
 std::vector<SceneProblem> sceneWarnings(const World& world);
 
 /// A run's starting energy, to judge its growth against (issue 17, F2).

@@ -107,5 +107,59 @@ TEST(SceneWarnings, ManyPairsAreCountedNotListed)
     EXPECT_EQ(warnings.back().toString(), "bodies: and 15 more pairs of bodies with a mass ratio above 100");
 }
 
+// A spring's stiffness against the masses it moves: a 1 kg box on a spring of 1 m to the world,
+// at its rest length, swings at ω = √k along it; at 1/240 s semi-implicit Euler is stable up to
+// ω·h = 2, so up to k = 480² N/m.
+TEST(SceneWarnings, ASpringTooStiffForTheStepNamesItsFrequencyAndTheLongestStep)
+{
+    World world;
+    world.settings.gravity = Vec2::Zero();
+    world.settings.integrator = IntegratorKind::SemiImplicitEuler;
+    world.settings.timeStep = 1.0 / 240;
+    world.bodies = {box("box", Vec2(0, 0), 1)};
+    Spring spring;
+    spring.bodyA = BodyId{0};
+    spring.anchorB = Vec2(0, 1);
+    spring.restLength = 1;
+    spring.stiffness = 0.98 * 480 * 480;
+    world.springs = {spring};
+    EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
+    world.springs[0].stiffness = 1.02 * 480 * 480;
+    std::vector<SceneProblem> warnings = sceneWarnings(world);
+    ASSERT_EQ(warnings.size(), 1u) << joined(warnings);
+    EXPECT_EQ(warnings[0].path, "springs[0]");
+    EXPECT_NE(warnings[0].reason.find("along it) it oscillates at ω = √(k/m) = 485 rad/s: ω·h = 2.02"), std::string::npos)
+        << warnings[0].reason;
+    EXPECT_NE(warnings[0].reason.find("semi-implicit Euler"), std::string::npos) << warnings[0].reason;
+    EXPECT_NE(warnings[0].reason.find("make the step at most 4.13 ms"), std::string::npos) << warnings[0].reason;
+
+    // The same spring to the box's corner-side point half a metre across it: the box also turns
+    // (I = 1/6 kg·m², so 1/m = 1 + 0.5²·6 = 2.5 /kg), and a softer spring is already too stiff.
+    world.springs[0].anchorA = Vec2(0.5, 0);
+    world.springs[0].anchorB = Vec2(0.5, 1);
+    world.springs[0].stiffness = 1.02 * 480 * 480 / 2.5;
+    warnings = sceneWarnings(world);
+    ASSERT_EQ(warnings.size(), 1u) << joined(warnings);
+    EXPECT_NE(warnings[0].reason.find("on 0.4 kg"), std::string::npos) << warnings[0].reason;
+    world.springs[0].stiffness = 0.98 * 480 * 480 / 2.5;
+    EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
+
+    // Anchored on the box's far side along the spring and stretched to twice its rest length, it
+    // pulls across its line with k/2 at a lever of 0.5 m: ω² = k/2 · 2.5, more than k along it.
+    world.springs[0].anchorA = Vec2(0, -0.5);
+    world.springs[0].anchorB = Vec2(0, 1.5);
+    world.springs[0].restLength = 1;
+    world.springs[0].stiffness = 1.02 * 480 * 480 / 1.25;
+    warnings = sceneWarnings(world);
+    ASSERT_EQ(warnings.size(), 1u) << joined(warnings);
+    EXPECT_NE(warnings[0].reason.find("stretched to 2 m (rest length 1 m), pulls its ends across its line"),
+              std::string::npos)
+        << warnings[0].reason;
+
+    // RK4 is stable to ω·h = 2√2: the spring that semi-implicit Euler could not take passes.
+    world.settings.integrator = IntegratorKind::Rk4;
+    EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
+}
+
 } // namespace
 } // namespace impetus::model
