@@ -218,6 +218,22 @@ Vec2 worldPointNear(SceneRandom& random, const Body& a)
     return p;
 }
 
+/// Softens a spring too stiff for the world's integrator at its step (ω·h past
+/// model::stableOmegaStep, ω with the bodies' turns at the anchors): such a spring is legal, but
+/// the program says it will blow up (model::sceneWarnings), so that outcome is expected, not a
+/// finding. Its ω is brought to kSpringStableShare of the limit, its damping ratio kept.
+void keepSpringStable(const World& world, model::Spring& spring)
+{
+    const model::SpringMode mode = model::springMode(world, spring);
+    const std::optional<Scalar> limit = model::stableOmegaStep(world.settings.integrator, mode.zeta);
+    const Scalar omegaStep = mode.omega * world.settings.timeStep;
+    if (!limit || !(omegaStep > kSpringStableShare * *limit))
+        return;
+    const Scalar scale = kSpringStableShare * *limit / omegaStep;
+    spring.stiffness *= scale * scale;
+    spring.damping *= scale;
+}
+
 void addSprings(SceneRandom& random, World& world, const std::vector<BodyId>& dynamic)
 {
     const int count = random.integer(0, kMaxSprings);
@@ -240,6 +256,7 @@ void addSprings(SceneRandom& random, World& world, const std::vector<BodyId>& dy
         spring.restLength = (endB - endA).norm();
         if (random.chance(kRestLengthGivenShare))
             spring.restLength *= random.uniform(kMinRestFactor, kMaxRestFactor);
+        keepSpringStable(world, spring);
         world.springs.push_back(spring);
     }
 }

@@ -177,6 +177,57 @@ void checkMassRatios(const World& world, std::vector<SceneProblem>& out)
     }
 }
 
+const char* integratorWords(IntegratorKind integrator)
+{
+    switch (integrator) {
+    case IntegratorKind::SemiImplicitEuler:
+        return "semi-implicit Euler stays stable: the bodies on it will swing ever wider and fly apart";
+    case IntegratorKind::Rk4:
+        return "RK4 stays stable: the bodies on it will swing ever wider and fly apart";
+    case IntegratorKind::Euler:
+        break;
+    }
+    return "explicit Euler's energy doubles within one period (each step multiplies it by 1 − 2ζωh + ω²h², ζ the "
+           "damping ratio)";
+}
+
+/// A spring too stiff for the step: the spring and the bodies it joins oscillate at ω = √(k/m),
+/// m the effective mass of the two ends along the spring (with the turn of each body about its
+/// centre, so that an anchor far off a body's centre counts), and an integrator that takes steps
+/// of h is unstable once ω·h passes its limit (stableOmegaStep). The integrators are not split
+/// for a spring: a lesson on integrators shows each one's error at the step the user chose.
+void checkSpringSteps(const World& world, std::vector<SceneProblem>& out)
+{
+    const Scalar h = world.settings.timeStep;
+    if (!(h > 0))
+        return;
+    for (std::size_t i = 0; i < world.springs.size(); ++i) {
+        const Spring& spring = world.springs[i];
+        if (!(spring.stiffness > 0))
+            continue;
+        const SpringMode mode = springMode(world, spring);
+        const std::optional<Scalar> stable = stableOmegaStep(world.settings.integrator, mode.zeta);
+        const Scalar omega = mode.omega;
+        if (!stable || !(omega * h > *stable) || !std::isfinite(omega))
+            continue;
+        const Scalar limit = *stable;
+        out.push_back({"springs[" + std::to_string(i) + "]",
+                       "k = " + shown(spring.stiffness) + " N/m" +
+                           (mode.across ? ", stretched to " + shown(mode.length) + " m (rest length " +
+                                              shown(spring.restLength) + " m), pulls its ends across its line with " +
+                                              shown(mode.stiffness) + " N/m; on "
+                                        : " on ") +
+                           shown(1 / mode.inverseMass) + " kg (the ends' effective mass " +
+                           (mode.across ? "across" : "along") + " it) it oscillates at ω = √(k/m) = " + shown(omega) +
+                           " rad/s: ω·h = " + shown(omega * h) + " at the step of " +
+                           shown(h * kMillisecondsPerSecond) + " ms, above the " + shown(limit) + " at which " +
+                           integratorWords(world.settings.integrator) + "; make the step at most " +
+                           shown(limit / omega * kMillisecondsPerSecond) + " ms, or the spring softer"});
+    }
+}
+
+} // namespace
+
 /// The largest ω·h at which `integrator` keeps an oscillator of angular frequency ω from growing,
 /// at a step h: semi-implicit Euler 2, RK4 2√2 (where its stability region crosses the imaginary
 /// axis), undamped. Explicit Euler grows wherever ω·h > 2ζ (ζ the damping ratio): each step
@@ -211,88 +262,44 @@ std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta)
     return low;
 }
 
-const char* integratorWords(IntegratorKind integrator)
+SpringMode springMode(const World& world, const Spring& spring)
 {
-    switch (integrator) {
-    case IntegratorKind::SemiImplicitEuler:
-        return "semi-implicit Euler stays stable: the bodies on it will swing ever wider and fly apart";
-    case IntegratorKind::Rk4:
-        return "RK4 stays stable: the bodies on it will swing ever wider and fly apart";
-    case IntegratorKind::Euler:
-        break;
-    }
-    return "explicit Euler's energy doubles within one period (each step multiplies it by 1 − 2ζωh + ω²h², ζ the "
-           "damping ratio)";
-}
-
-/// A spring too stiff for the step: the spring and the bodies it joins oscillate at ω = √(k/m),
-/// m the effective mass of the two ends along the spring (with the turn of each body about its
-/// centre, so that an anchor far off a body's centre counts), and an integrator that takes steps
-/// of h is unstable once ω·h passes its limit (stableOmegaStep). The integrators are not split
-/// for a spring: a lesson on integrators shows each one's error at the step the user chose.
-void checkSpringSteps(const World& world, std::vector<SceneProblem>& out)
-{
-    const Scalar h = world.settings.timeStep;
-    if (!(h > 0))
-        return;
-    for (std::size_t i = 0; i < world.springs.size(); ++i) {
-        const Spring& spring = world.springs[i];
-        if (!(spring.stiffness > 0) || spring.bodyA.index >= world.bodies.size() ||
-            (spring.bodyB && spring.bodyB->index >= world.bodies.size()))
-            continue;
-        const Body& a = world.body(spring.bodyA);
-        const Body* b = spring.bodyB ? &world.body(*spring.bodyB) : nullptr;
-        const Vec2 endA = a.worldPoint(spring.anchorA);
-        const Vec2 endB = b ? b->worldPoint(spring.anchorB) : spring.anchorB;
-        const Vec2 armA = endA - a.state.position;
-        const Vec2 armB = b ? Vec2(endB - b->state.position) : Vec2::Zero();
-        // Along the spring it pulls with k. Stretched past its rest length, its tension T also
-        // pulls its ends back onto its line when they move across it, with a stiffness T/L =
-        // k·(1 − L₀/L): a body whose anchor is far off its centre along the spring swings about
-        // it fastest across. A spring of zero length pulls whichever way its ends part, and each
-        // turn is counted with the whole arm.
-        const Vec2 along = endB - endA;
-        const Scalar length = along.norm();
-        const auto inverseMassAcross = [&](const Vec2& direction) {
-            const auto turn = [&](const Vec2& arm) {
-                if (!(length > 0))
-                    return arm.squaredNorm();
-                const Scalar lever = arm.x() * direction.y() - arm.y() * direction.x();
-                return lever * lever;
-            };
-            return a.invMass + turn(armA) * a.invInertia + (b ? b->invMass + turn(armB) * b->invInertia : Scalar(0));
+    const Body& a = world.body(spring.bodyA);
+    const Body* b = spring.bodyB ? &world.body(*spring.bodyB) : nullptr;
+    const Vec2 endA = a.worldPoint(spring.anchorA);
+    const Vec2 endB = b ? b->worldPoint(spring.anchorB) : spring.anchorB;
+    const Vec2 armA = endA - a.state.position;
+    const Vec2 armB = b ? Vec2(endB - b->state.position) : Vec2::Zero();
+    // Along the spring it pulls with k. Stretched past its rest length, its tension T also pulls
+    // its ends back onto its line when they move across it, with a stiffness T/L = k·(1 − L₀/L):
+    // a body whose anchor is far off its centre along the spring swings about it fastest across.
+    // A spring of zero length pulls whichever way its ends part, and each turn is counted with the
+    // whole arm.
+    SpringMode mode;
+    const Vec2 along = endB - endA;
+    mode.length = along.norm();
+    const auto inverseMassAcross = [&](const Vec2& direction) {
+        const auto turn = [&](const Vec2& arm) {
+            if (!(mode.length > 0))
+                return arm.squaredNorm();
+            const Scalar lever = arm.x() * direction.y() - arm.y() * direction.x();
+            return lever * lever;
         };
-        const Vec2 u = length > 0 ? Vec2(along / length) : Vec2(1, 0);
-        const Scalar axialInverse = inverseMassAcross(u);
-        const Scalar acrossStiffness =
-            length > spring.restLength ? spring.stiffness * (1 - spring.restLength / length) : Scalar(0);
-        const Scalar acrossInverse = inverseMassAcross(Vec2(-u.y(), u.x()));
-        const bool acrossFaster = acrossStiffness * acrossInverse > spring.stiffness * axialInverse;
-        const Scalar stiffness = acrossFaster ? acrossStiffness : spring.stiffness;
-        const Scalar inverseMass = acrossFaster ? acrossInverse : axialInverse;
-        const Scalar omega = std::sqrt(stiffness * inverseMass);
-        // The damping ratio of the mode: c/(2mω), the dashpot acting along the spring.
-        const Scalar zeta = omega > 0 ? spring.damping * axialInverse / (2 * omega) : Scalar(0);
-        const std::optional<Scalar> stable = stableOmegaStep(world.settings.integrator, zeta);
-        if (!stable || !(omega * h > *stable) || !std::isfinite(omega))
-            continue;
-        const Scalar limit = *stable;
-        out.push_back({"springs[" + std::to_string(i) + "]",
-                       "k = " + shown(spring.stiffness) + " N/m" +
-                           (acrossFaster ? ", stretched to " + shown(length) + " m (rest length " +
-                                               shown(spring.restLength) + " m), pulls its ends across its line with " +
-                                               shown(stiffness) + " N/m; on "
-                                         : " on ") +
-                           shown(1 / inverseMass) + " kg (the ends' effective mass " +
-                           (acrossFaster ? "across" : "along") + " it) it oscillates at ω = √(k/m) = " + shown(omega) +
-                           " rad/s: ω·h = " + shown(omega * h) + " at the step of " +
-                           shown(h * kMillisecondsPerSecond) + " ms, above the " + shown(limit) + " at which " +
-                           integratorWords(world.settings.integrator) + "; make the step at most " +
-                           shown(limit / omega * kMillisecondsPerSecond) + " ms, or the spring softer"});
-    }
+        return a.invMass + turn(armA) * a.invInertia + (b ? b->invMass + turn(armB) * b->invInertia : Scalar(0));
+    };
+    const Vec2 u = mode.length > 0 ? Vec2(along / mode.length) : Vec2(1, 0);
+    const Scalar axialInverse = inverseMassAcross(u);
+    const Scalar acrossStiffness =
+        mode.length > spring.restLength ? spring.stiffness * (1 - spring.restLength / mode.length) : Scalar(0);
+    const Scalar acrossInverse = inverseMassAcross(Vec2(-u.y(), u.x()));
+    mode.across = acrossStiffness * acrossInverse > spring.stiffness * axialInverse;
+    mode.stiffness = mode.across ? acrossStiffness : spring.stiffness;
+    mode.inverseMass = mode.across ? acrossInverse : axialInverse;
+    mode.omega = std::sqrt(mode.stiffness * mode.inverseMass);
+    // The dashpot acts along the spring: c/(2mω) there, and nothing across it.
+    mode.zeta = !mode.across && mode.omega > 0 ? spring.damping * axialInverse / (2 * mode.omega) : Scalar(0);
+    return mode;
 }
-
-} // namespace
 
 std::vector<SceneProblem> sceneWarnings(const World& world)
 {

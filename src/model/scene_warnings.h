@@ -27,6 +27,26 @@ namespace impetus::model {
 ///   the energy doubles within one period (about 0.11).
 std::vector<SceneProblem> sceneWarnings(const World& world);
 
+/// The fastest oscillation a spring drives in the bodies it joins, at their present poses.
+struct SpringMode {
+    Scalar omega = 0; ///< ω = √(k/m), rad/s
+    Scalar zeta = 0; ///< damping ratio c/(2mω) of the mode (0 across the spring, where no dashpot acts)
+    Scalar stiffness = 0; ///< k along the spring, or k·(1 − L₀/L) across it, N/m
+    Scalar inverseMass = 0; ///< 1/m, the ends' effective inverse mass in that direction, turns included, 1/kg
+    Scalar length = 0; ///< the spring's present length L, m
+    bool across = false; ///< true when the mode across the stretched spring is the faster one
+};
+
+/// The spring's fastest mode: along it with k, or across it with the tension's k·(1 − L₀/L)
+/// when stretched, each body's turn about its centre counted at its anchor's lever arm.
+SpringMode springMode(const World& world, const Spring& spring);
+
+/// The largest ω·h at which `integrator` keeps an oscillator of angular frequency ω and damping
+/// ratio ζ from growing at a step h: 2 for semi-implicit Euler and 2√2 for RK4 (undamped); for
+/// explicit Euler, which grows wherever ω·h > 2ζ, the ω·h at which the energy doubles within one
+/// period (about 0.11 undamped), and nothing for ζ ≥ 1 (no oscillation).
+std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta);
+
 /// A run's starting energy, to judge its growth against (issue 17, F2).
 struct EnergyBaseline {
     bool active = false; ///< false when something in the world does work (a fixed body moves)
