@@ -12,9 +12,21 @@ namespace impetus::view::constants {
 inline constexpr double kProjectorFontScale = 1.5;
 
 /// The readouts in the status bar (time, energies, momentum, collisions) in projector mode, × the
-/// normal size: the numbers the class is asked about, larger again than the rest, and as large as
-/// lets every readout still fit across a 1280 px wide projector.
+/// normal size: the numbers the class is asked about, larger again than the rest. Where they do
+/// not all fit across the status bar at that size, they are made smaller in steps of
+/// kProjectorReadoutStep until they do (ProjectorMode).
 inline constexpr double kProjectorReadoutScale = 1.8;
+
+/// The step by which projector mode makes the readouts smaller or larger to fit them, × the normal
+/// size; and the room, as a share of the status bar, that must be free before they grow back a
+/// step, so that numbers whose width changes by a digit as they run do not make them flicker.
+inline constexpr double kProjectorReadoutStep = 0.1;
+inline constexpr double kProjectorReadoutGrowRoom = 0.02;
+
+/// QStatusBar's layout: 6 px between its permanent widgets, and the room at its ends (2 px
+/// before the first, and the size grip's), px.
+inline constexpr int kStatusBarSpacingPx = 6;
+inline constexpr int kStatusBarEndsPx = 24;
 
 /// Line widths on the canvas in projector mode (outlines, springs, rods, markers), × the normal
 /// widths: a 1.5 px outline thins to nothing on a projector that blurs across 2 to 3 px.

@@ -5,13 +5,19 @@
 #include "view/projector_constants.h"
 
 #include <QAction>
+#include <QEvent>
+#include <QFontMetricsF>
+#include <QLabel>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace impetus::view {
 
@@ -92,7 +98,10 @@ void ProjectorMode::apply(bool on)
             menu->setFont(large);
             menu->setPalette(palette);
         }
-        status->setFont(scaled(m_normalFont, constants::kProjectorReadoutScale));
+        m_status = status;
+        setReadoutScale(constants::kProjectorReadoutScale);
+        status->installEventFilter(this);
+        fitReadouts();
         m_canvas.setLook(CanvasLook::projector());
         if (!m_wasFullScreen)
             m_window.setWindowState(m_window.windowState() | Qt::WindowFullScreen);
@@ -104,11 +113,85 @@ void ProjectorMode::apply(bool on)
             menu->setFont(QFont());
             menu->setPalette(QPalette());
         }
+        status->removeEventFilter(this);
+        m_status = nullptr;
         status->setFont(m_normalStatusFont);
+        m_readoutScale = 1;
         m_canvas.setLook(CanvasLook{});
         if (!m_wasFullScreen)
             m_window.setWindowState(m_window.windowState() & ~Qt::WindowFullScreen);
     }
+}
+
+bool ProjectorMode::eventFilter(QObject* watched, QEvent* event)
+{
+    // A readout whose text grows asks its parent, the status bar, for a new layout; a resize
+    // changes the room. Either may change what fits: looked at once the events have settled.
+    if (m_on && m_status && watched == m_status &&
+        (event->type() == QEvent::LayoutRequest || event->type() == QEvent::Resize) && !m_fitQueued) {
+        m_fitQueued = true;
+        QTimer::singleShot(0, this, [this] {
+            m_fitQueued = false;
+            fitReadouts();
+        });
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+void ProjectorMode::setReadoutScale(double scale)
+{
+    m_readoutScale = scale;
+    if (m_status)
+        m_status->setFont(scaled(m_normalFont, scale));
+}
+
+void ProjectorMode::fitReadouts()
+{
+    if (!m_on || !m_status)
+        return;
+    QStatusBar* status = m_status;
+    // A window not yet shown has no width of its own yet: it is fitted when it is shown.
+    if (!status->isVisible())
+        return;
+    const int room = status->width();
+    // Each readout's width at a scale: its text in that font, plus what its label adds around the
+    // text (margins), which does not grow with the font.
+    struct Readout {
+        QString text;
+        int around = 0;
+    };
+    std::vector<Readout> readouts;
+    const QFontMetricsF now(status->font());
+    for (QLabel* label : status->findChildren<QLabel*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (!label->isVisibleTo(status))
+            continue;
+        const QString text = label->text();
+        readouts.push_back({text, label->sizeHint().width() - static_cast<int>(std::ceil(now.horizontalAdvance(text)))});
+    }
+    if (room <= 0 || readouts.empty())
+        return;
+    const auto widthAt = [&](double scale) {
+        const QFontMetricsF metrics(scaled(m_normalFont, scale));
+        double width = constants::kStatusBarEndsPx;
+        for (const Readout& readout : readouts)
+            width += std::ceil(metrics.horizontalAdvance(readout.text)) + readout.around + constants::kStatusBarSpacingPx;
+        return width;
+    };
+    // The largest step that fits, from the full projector size down to the normal size; a larger
+    // one than now only with room to spare.
+    const int steps = static_cast<int>(
+        std::lround((constants::kProjectorReadoutScale - 1) / constants::kProjectorReadoutStep));
+    double best = 1;
+    for (int k = steps; k >= 0; --k) {
+        const double scale = 1 + k * constants::kProjectorReadoutStep;
+        const double spare = scale > m_readoutScale + 1e-9 ? 1 - constants::kProjectorReadoutGrowRoom : 1;
+        if (widthAt(scale) <= room * spare) {
+            best = scale;
+            break;
+        }
+    }
+    if (std::abs(best - m_readoutScale) > 1e-9)
+        setReadoutScale(best);
 }
 
 } // namespace impetus::view

@@ -38,6 +38,19 @@ QLabel* statusLabel(MainWindow& window, const QString& name)
     return nullptr;
 }
 
+/// The width of a common classroom projector (1280 × 800), px.
+constexpr int kProjectorWidthPx = 1280;
+
+/// Whether every readout of the status bar is as wide as its text asks: none is cut off.
+bool everyReadoutFits(MainWindow& window)
+{
+    for (QLabel* label : window.statusBar()->findChildren<QLabel*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (label->isVisible() && label->width() < label->sizeHint().width())
+            return false;
+    }
+    return true;
+}
+
 /// Under gravity: a blue box resting on a fixed floor, so both are in contact at every step.
 model::World restingBoxWorld()
 {
@@ -91,6 +104,7 @@ class ProjectorModeTest : public QObject {
 private slots:
     void f11EnlargesTheReadoutsAndGoesFullScreen();
     void projectorModeIsRememberedForTheNextWindow();
+    void readoutsShrinkToFitLongNumbersAndGrowBack();
     void collidingBodyIsHatchedBesidesRed();
     void arrowsAndTrailsAreThickInProjectorMode();
 
@@ -127,9 +141,22 @@ void ProjectorModeTest::f11EnlargesTheReadoutsAndGoesFullScreen()
 
     auto* action = window.findChild<QAction*>(QStringLiteral("projectorModeAction"));
     QVERIFY(action && action->isChecked());
-    QCOMPARE(time->font().pointSizeF(), readoutBefore * constants::kProjectorReadoutScale);
-    QCOMPARE(energy->font().pointSizeF(), readoutBefore * constants::kProjectorReadoutScale);
+    QVERIFY(window.windowState() & Qt::WindowFullScreen);
+    // The readouts are as large as lets every one of them fit across the status bar: on the test
+    // platform's screen of 800 px that is barely larger than normal, so they are read on a window
+    // as wide as a 1280 px projector.
+    auto* projector = window.findChild<view::ProjectorMode*>();
+    QVERIFY(projector);
+    QTRY_VERIFY(everyReadoutFits(window));
+    window.showNormal();
+    window.resize(kProjectorWidthPx, 720);
+    // There, larger than the rest of the window's text.
+    QTRY_VERIFY(projector->readoutScale() > constants::kProjectorFontScale);
+    QTRY_VERIFY(everyReadoutFits(window));
+    QCOMPARE(time->font().pointSizeF(), readoutBefore * projector->readoutScale());
+    QCOMPARE(energy->font().pointSizeF(), readoutBefore * projector->readoutScale());
     QVERIFY(time->sizeHint().height() > readoutHeightBefore);
+    window.showFullScreen();
     QCOMPARE(window.menuBar()->font().pointSizeF(), menuBefore * constants::kProjectorFontScale);
     QVERIFY(window.windowState() & Qt::WindowFullScreen);
     QCOMPARE(window.canvas().look(), view::CanvasLook::projector());
@@ -142,6 +169,43 @@ void ProjectorModeTest::f11EnlargesTheReadoutsAndGoesFullScreen()
     QCOMPARE(window.menuBar()->font().pointSizeF(), menuBefore);
     QVERIFY(!(window.windowState() & Qt::WindowFullScreen));
     QCOMPARE(window.canvas().look(), view::CanvasLook{});
+}
+
+// A fast, heavy body high up makes every readout several digits longer. At the size that suits
+// the resting box they would no longer fit across the screen, and the last ones would be cut off
+// (their units first): they are made smaller until they fit, and grow back with short numbers.
+void ProjectorModeTest::readoutsShrinkToFitLongNumbersAndGrowBack()
+{
+    MainWindow window;
+    window.setScene(restingBoxWorld(), QStringLiteral("box"));
+    QVERIFY(showActive(window));
+    QTest::keyClick(&window.canvas(), Qt::Key_F11);
+    auto* projector = window.findChild<view::ProjectorMode*>();
+    QVERIFY(projector && projector->isOn());
+    window.showNormal();
+    window.resize(kProjectorWidthPx, 720);
+    QTRY_VERIFY(projector->readoutScale() > constants::kProjectorFontScale);
+    QTRY_VERIFY(everyReadoutFits(window));
+    const double shortScale = projector->readoutScale();
+
+    model::World fast = restingBoxWorld();
+    fast.bodies[1].massSpec = model::MassSpec{model::MassMode::Mass, 5000};
+    fast.bodies[1].updateDerived();
+    fast.bodies[1].state.position = impetus::Vec2(0, 3210);
+    fast.bodies[1].state.velocity = impetus::Vec2(-1234.5, 987.6);
+    window.setScene(fast, QStringLiteral("fast"));
+    QTRY_VERIFY(projector->readoutScale() < shortScale);
+    QTRY_VERIFY(everyReadoutFits(window));
+    QLabel* energy = statusLabel(window, QStringLiteral("Total energy"));
+    QVERIFY(energy && energy->text().contains(QStringLiteral(" J")));
+    QVERIFY(projector->readoutScale() >= 1);
+
+    window.setScene(restingBoxWorld(), QStringLiteral("box"));
+    QTRY_COMPARE(projector->readoutScale(), shortScale);
+    QVERIFY(everyReadoutFits(window));
+    QTest::keyClick(&window.canvas(), Qt::Key_F11);
+    QVERIFY(!projector->isOn());
+    QCOMPARE(projector->readoutScale(), 1.0);
 }
 
 void ProjectorModeTest::projectorModeIsRememberedForTheNextWindow()
