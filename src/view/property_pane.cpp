@@ -1,5 +1,7 @@
 #include "view/property_pane.h"
 
+#include "view/number_text.h"
+
 #include "view/message_label.h"
 
 #include "controller/diagnostics.h"
@@ -1334,7 +1336,11 @@ std::optional<QString> PropertyPane::checkNumber(const QString& label, const QSt
     return std::nullopt;
 }
 
-QString PropertyPane::formatNumber(double value) const { return m_locale.toString(value, 'g', kSignificantDigits); }
+QString PropertyPane::formatNumber(double value) const
+{
+    // A small e before an exponent, as the readouts write it (number_text.h); both read back.
+    return localeNumber(m_locale, value, 'g', kSignificantDigits);
+}
 
 std::optional<double> PropertyPane::parseNumber(const QString& text) const
 {

@@ -129,6 +129,7 @@ private slots:
     void showsTheSelectedBoxWithAngleInDegrees();
     void restitutionEditEmitsOnceWithOnlyThatChanged();
     void angleIsTypedInDegrees();
+    void exponentsAreWrittenWithASmallEAndReadBack();
     void badValueIsRefusedWithMessage_data();
     void badValueIsRefusedWithMessage();
     void switchingToMassKeepsTheMassAndLocksDensity();
@@ -220,6 +221,43 @@ void PropertyPaneTest::angleIsTypedInDegrees()
     QCOMPARE(spy.at(1).at(1).value<model::Body>().state.angle, kPi / 2);
     QCOMPARE(spy.at(1).at(1).value<model::Body>().state.angularVelocity, -kPi);
     QCOMPARE(pane.findChild<QLineEdit*>("angle")->text(), QString("90"));
+}
+
+// Very large and very small values are written with an exponent, with a small e as every readout
+// writes it ("2.5e+06", not QLocale's "2.5E+06"), in German with its decimal comma; what the
+// pane writes reads back as the same number.
+void PropertyPaneTest::exponentsAreWrittenWithASmallEAndReadBack()
+{
+    const QLocale before;
+    for (const QLocale::Language language : {QLocale::English, QLocale::German}) {
+        QLocale::setDefault(QLocale(language));
+        const bool german = language == QLocale::German;
+        PropertyPane pane;
+        model::World world = editorWorld();
+        pane.showSelection(world, bodySelection(0));
+        QSignalSpy spy(&pane, &PropertyPane::bodyEdited);
+        auto* density = pane.findChild<QLineEdit*>("density");
+        typeAndEnter(density, german ? QStringLiteral("2,5e6") : QStringLiteral("2.5e6"));
+        QCOMPARE(spy.count(), 1);
+        world.bodies[0] = editedBody(spy);
+        QCOMPARE(world.bodies[0].mass, 5e6); // 2 m² at 2.5e6 kg/m²
+        pane.showSelection(world, bodySelection(0));
+        QCOMPARE(density->text(), german ? QStringLiteral("2,5e+06") : QStringLiteral("2.5e+06"));
+        QCOMPARE(pane.findChild<QLineEdit*>("mass")->text(), QStringLiteral("5e+06"));
+
+        // The text written, typed back unchanged, is the same number: no edit is made.
+        auto* friction = pane.findChild<QLineEdit*>("friction");
+        typeAndEnter(friction, german ? QStringLiteral("2,5E-7") : QStringLiteral("2.5E-7"));
+        QCOMPARE(spy.count(), 2);
+        world.bodies[0] = spy.at(1).at(1).value<model::Body>();
+        QCOMPARE(world.bodies[0].material.friction, 2.5e-7);
+        pane.showSelection(world, bodySelection(0));
+        const QString shown = friction->text();
+        QCOMPARE(shown, german ? QStringLiteral("2,5e-07") : QStringLiteral("2.5e-07"));
+        typeAndEnter(friction, shown);
+        QCOMPARE(spy.count(), 2);
+    }
+    QLocale::setDefault(before);
 }
 
 void PropertyPaneTest::badValueIsRefusedWithMessage_data()
