@@ -11,6 +11,8 @@
 #include <QVector>
 
 #include <algorithm>
+#include <optional>
+#include <unordered_map>
 #include <cmath>
 #include <iterator>
 #include <vector>
@@ -282,11 +284,56 @@ const std::deque<TrailPoint>& CanvasInstruments::trail(std::size_t body) const
 
 void CanvasInstruments::startTrails()
 {
+    followBodies();
     const model::World& world = m_runner.world();
     m_trailPoints.assign(world.bodies.size(), {});
     for (std::size_t i = 0; i < world.bodies.size(); ++i)
         m_trailPoints[i].push_back({world.stepCount, toPoint(world.bodies[i].state.position)});
     invalidateTrailPictures();
+}
+
+void CanvasInstruments::followBodies()
+{
+    const model::World& world = m_runner.world();
+    const bool same = m_bodyNames.size() == world.bodies.size() &&
+                      std::equal(m_bodyNames.begin(), m_bodyNames.end(), world.bodies.begin(),
+                                 [](const std::string& name, const model::Body& body) { return name == body.name; });
+    if (same)
+        return;
+    std::unordered_map<std::string, std::uint32_t> indexOf;
+    for (std::uint32_t i = 0; i < world.bodies.size(); ++i)
+        indexOf.emplace(world.bodies[i].name, i);
+    const auto newIndex = [&](std::size_t oldIndex) -> std::optional<std::uint32_t> {
+        if (oldIndex >= m_bodyNames.size())
+            return std::nullopt;
+        const auto it = indexOf.find(m_bodyNames[oldIndex]);
+        return it == indexOf.end() ? std::nullopt : std::optional<std::uint32_t>(it->second);
+    };
+    if (m_trails) {
+        std::vector<std::deque<TrailPoint>> moved(world.bodies.size());
+        for (std::size_t i = 0; i < m_trailPoints.size(); ++i) {
+            if (const std::optional<std::uint32_t> to = newIndex(i))
+                moved[*to] = std::move(m_trailPoints[i]);
+        }
+        for (std::size_t i = 0; i < moved.size(); ++i) {
+            if (moved[i].empty())
+                moved[i].push_back({world.stepCount, toPoint(world.bodies[i].state.position)});
+        }
+        m_trailPoints = std::move(moved);
+        invalidateTrailPictures();
+    }
+    const bool traced = !m_traced.empty();
+    std::erase_if(m_traced, [&](TracedPoint& point) {
+        const std::optional<std::uint32_t> to = newIndex(point.body);
+        if (to)
+            point.body = *to;
+        return !to;
+    });
+    m_bodyNames.clear();
+    for (const model::Body& body : world.bodies)
+        m_bodyNames.push_back(body.name);
+    if (traced && m_traced.empty() && !m_trails)
+        emit samplingChanged();
 }
 
 void CanvasInstruments::invalidateTrailPictures()
@@ -304,8 +351,8 @@ void CanvasInstruments::addSamples(const std::vector<StepSample>& samples)
     for (TracedPoint& traced : m_traced) {
         for (const StepSample& sample : samples) {
             // Recorded before a body came or went (another scene), or along a run already recorded.
-            if (sample.centres.size() != m_tracedBodyCount || sample.angles.size() != m_tracedBodyCount ||
-                traced.body >= m_tracedBodyCount || (!traced.trail.empty() && traced.trail.back().step >= sample.step))
+            if (sample.centres.size() != m_bodyNames.size() || sample.angles.size() != m_bodyNames.size() ||
+                traced.body >= m_bodyNames.size() || (!traced.trail.empty() && traced.trail.back().step >= sample.step))
                 continue;
             const Vec2 at = sample.centres[traced.body] + rotate(traced.local, sample.angles[traced.body]);
             traced.trail.push_back({sample.step, toPoint(at)});
@@ -358,10 +405,8 @@ void CanvasInstruments::discardAfter(std::int64_t step)
 void CanvasInstruments::refresh()
 {
     const model::World& world = m_runner.world();
-    if (m_trails && m_trailPoints.size() != world.bodies.size())
-        startTrails(); // a body came or went: indices moved, start afresh
-    if (!m_traced.empty() && m_tracedBodyCount != world.bodies.size())
-        clearTracedPoints(); // the same: the points' bodies are no longer where they were
+    if (m_trails || !m_traced.empty())
+        followBodies(); // a body came or went: the others keep their paths at their new indices
     const bool forces = drawsKindAnywhere(VectorKind::Acceleration) || drawsKindAnywhere(VectorKind::NetForce) ||
                         drawsKindAnywhere(VectorKind::ForceParts);
     if (forces)
@@ -489,10 +534,8 @@ void CanvasInstruments::setTracedPoint(std::uint32_t body, const Vec2& local)
     const model::World& world = m_runner.world();
     if (body >= world.bodies.size())
         return;
-    if (!m_traced.empty() && m_tracedBodyCount != world.bodies.size())
-        m_traced.clear();
+    followBodies();
     const bool sampling = m_traced.empty();
-    m_tracedBodyCount = world.bodies.size();
     std::erase_if(m_traced, [&](const TracedPoint& traced) { return traced.body == body; });
     TracedPoint& traced = m_traced.emplace_back();
     traced.body = body;
@@ -532,7 +575,7 @@ Vec2 CanvasInstruments::worldPoint(std::uint32_t body, const Vec2& local) const
 void CanvasInstruments::paintTracedPoints(QPainter& painter)
 {
     const model::World& world = m_runner.world();
-    if (m_traced.empty() || m_tracedBodyCount != world.bodies.size())
+    if (m_traced.empty() || m_bodyNames.size() != world.bodies.size())
         return;
     const QTransform toPixels = painter.worldTransform();
     painter.save();

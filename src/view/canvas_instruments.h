@@ -179,6 +179,10 @@ private:
     bool drawsBody(std::size_t i) const;
     /// Starts every body's trail at its centre now.
     void startTrails();
+    /// When bodies came or went (or were renamed) since the trails and traced points were last
+    /// told of them: each body keeps its trail and its traced points under its name at its new
+    /// index, a new body's trail starts where it is, and a gone body's are dropped.
+    void followBodies();
     /// True when `kind` is drawn for some body.
     bool drawsKindAnywhere(VectorKind kind) const;
     /// How far one trail has been drawn: where its line and its dots stopped, px.
@@ -216,7 +220,8 @@ private:
     std::vector<QPointF> m_dotBuffer;
     std::vector<controller::BodyForces> m_forces;
     std::vector<TracedPoint> m_traced;
-    std::size_t m_tracedBodyCount = 0; ///< the world's bodies when the points were set
+    /// The names of the world's bodies, in order, as m_trailPoints and m_traced index them.
+    std::vector<std::string> m_bodyNames;
 };
 
 } // namespace impetus::view

@@ -102,6 +102,7 @@ private slots:
     void velocityVectorsOfOneBodyFromThePane();
     void accelerationForceAndMomentumArrowsPointAlongTheirVectors();
     void tracePointDrawsACycloid();
+    void pathsStayWithTheirBodiesWhenABodyIsDeletedOrBack();
     void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
@@ -876,6 +877,64 @@ void InstrumentsTest::tracePointDrawsACycloid()
     QTest::keyClick(viewport, Qt::Key_Escape);
     QVERIFY(instruments.tracedPoints().empty());
     QCOMPARE(tinted(viewport->grab().toImage()), 0);
+}
+
+// A student traces a wheel's rim and draws trails, then deletes another body (and takes it back
+// with Undo): the wheel's index changes each time, but its trail and its traced point stay its
+// own; the body that comes back starts a trail where it is.
+void InstrumentsTest::pathsStayWithTheirBodiesWhenABodyIsDeletedOrBack()
+{
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body block = test::makeBody("block", model::Box{0.6, 0.6}, impetus::Vec2(-2, 0));
+    block.state.velocity = impetus::Vec2(1, 0);
+    world.bodies.push_back(block);
+    model::Body wheel = test::makeBody("wheel", model::Circle{0.5}, impetus::Vec2(2, 0));
+    wheel.state.velocity = impetus::Vec2(0, 1);
+    wheel.state.angularVelocity = 2;
+    world.bodies.push_back(wheel);
+    MainWindow window;
+    window.setScene(world, QStringLiteral("wheel"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    CanvasInstruments& instruments = canvas.instruments();
+    window.trailsAction()->trigger();
+    QTest::keyClick(viewport, Qt::Key_X);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(2, -0.4)).toPoint());
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    QCOMPARE(instruments.tracedPoints().front().body, 1u);
+    window.runner().stepBy(24);
+    QCOMPARE(instruments.trail(1).size(), std::size_t{25});
+    const QPointF wheelStart = instruments.trail(1).front().position;
+    const QPointF tracedStart = instruments.tracedPoints().front().trail.front().position;
+    QCOMPARE(wheelStart, QPointF(2, 0));
+
+    // Select the block and delete it: the wheel is body 0 now, with its paths.
+    QTest::keyClick(viewport, Qt::Key_S);
+    const impetus::Vec2 blockNow = window.runner().world().bodies[0].state.position;
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(blockNow.x(), blockNow.y())).toPoint());
+    QCOMPARE(window.document().selection(), (impetus::view::Selection{{0}, {}, {}}));
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t{1});
+    QCOMPARE(instruments.trail(0).size(), std::size_t{25});
+    QCOMPARE(instruments.trail(0).front().position, wheelStart);
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    QCOMPARE(instruments.tracedPoints().front().body, 0u);
+    QCOMPARE(instruments.tracedPoints().front().trail.size(), std::size_t{25});
+    QCOMPARE(instruments.tracedPoints().front().trail.front().position, tracedStart);
+
+    // Undo: the block is back as body 0 with a trail that starts where it is; the wheel is body 1
+    // again, and both its paths go on growing with the next steps.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t{2});
+    QCOMPARE(instruments.trail(0).size(), std::size_t{1});
+    QCOMPARE(instruments.trail(1).front().position, wheelStart);
+    QCOMPARE(instruments.tracedPoints().front().body, 1u);
+    window.runner().stepBy(12);
+    QCOMPARE(instruments.trail(1).size(), std::size_t{37});
+    QCOMPARE(instruments.tracedPoints().front().trail.size(), std::size_t{37});
+    QCOMPARE(instruments.trail(0).size(), std::size_t{13});
 }
 
 void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()
