@@ -249,12 +249,12 @@ std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta)
     const auto growthPerPeriod = [zeta](Scalar x) {
         return 2 * std::numbers::pi / x * std::log1p(x * x - 2 * zeta * x);
     };
-    // Bisection between where it starts to grow and where it doubles: growth rises with x there.
+    // Bisection between where it starts to grow (2ζ) and one further, where for every ζ < 1 it
+    // grows by more than twice a period (by 2π·ln(1 + x)/x at least, with x ≥ 1): the growth
+    // rises with x between them.
     const Scalar doubling = std::log(Scalar(2));
     Scalar low = std::max(Scalar(2) * zeta, Scalar(1e-6));
     Scalar high = low + 1;
-    while (!(growthPerPeriod(high) > doubling))
-        high *= 2;
     for (int i = 0; i < 60; ++i) {
         const Scalar x = 0.5 * (low + high);
         (growthPerPeriod(x) > doubling ? high : low) = x;
