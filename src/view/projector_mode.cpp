@@ -177,21 +177,24 @@ void ProjectorMode::fitReadouts()
             width += std::ceil(metrics.horizontalAdvance(readout.text)) + readout.around + constants::kStatusBarSpacingPx;
         return width;
     };
-    // The largest step that fits, from the full projector size down to the normal size; a larger
-    // one than now only with room to spare.
-    const int steps = static_cast<int>(
-        std::lround((constants::kProjectorReadoutScale - 1) / constants::kProjectorReadoutStep));
-    double best = 1;
-    for (int k = steps; k >= 0; --k) {
-        const double scale = 1 + k * constants::kProjectorReadoutStep;
-        const double spare = scale > m_readoutScale + 1e-9 ? 1 - constants::kProjectorReadoutGrowRoom : 1;
-        if (widthAt(scale) <= room * spare) {
-            best = scale;
-            break;
-        }
+    // As large as fits, from the size now: a step smaller at a time until the readouts fit (down
+    // to the normal size), or a step larger when they fit with room to spare. Usually one or two
+    // measures, as this runs whenever a readout's text changes width. Counted in whole steps, so
+    // that a size left and come back to is the same number.
+    const double step = constants::kProjectorReadoutStep;
+    const auto scaleOf = [step](int steps) { return 1 + steps * step; };
+    const int most = static_cast<int>(std::lround((constants::kProjectorReadoutScale - 1) / step));
+    const int current = std::clamp(static_cast<int>(std::lround((m_readoutScale - 1) / step)), 0, most);
+    int best = current;
+    if (widthAt(scaleOf(best)) > room) {
+        while (best > 0 && widthAt(scaleOf(best)) > room)
+            --best;
+    } else {
+        while (best < most && widthAt(scaleOf(best + 1)) <= room * (1 - constants::kProjectorReadoutGrowRoom))
+            ++best;
     }
-    if (std::abs(best - m_readoutScale) > 1e-9)
-        setReadoutScale(best);
+    if (best != current || std::abs(scaleOf(best) - m_readoutScale) > 1e-12)
+        setReadoutScale(best == most ? constants::kProjectorReadoutScale : scaleOf(best));
 }
 
 } // namespace impetus::view
