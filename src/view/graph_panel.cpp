@@ -284,10 +284,25 @@ void GraphPanel::addSamples(const std::vector<StepSample>& samples)
             continue;
         m_records.push_back(GraphRecord{sample.step, sample.time, it->readout, sample.totals});
     }
-    if (m_records.size() > constants::kMaxGraphSamples)
-        m_records.erase(m_records.begin(),
-                        m_records.begin() + static_cast<std::ptrdiff_t>(m_records.size() - constants::kMaxGraphSamples));
+    trimRecords();
     scheduleRedraw();
+}
+
+void GraphPanel::setSampleLimit(std::size_t most)
+{
+    m_sampleLimit = std::max<std::size_t>(1, most);
+    trimRecords();
+    scheduleRedraw();
+}
+
+void GraphPanel::trimRecords()
+{
+    // In one go once well past the limit: erasing from the front moves every record kept.
+    const auto slack = static_cast<std::size_t>(constants::kGraphTrimShare * static_cast<double>(m_sampleLimit));
+    if (m_records.size() <= m_sampleLimit + slack)
+        return;
+    m_records.erase(m_records.begin(),
+                    m_records.begin() + static_cast<std::ptrdiff_t>(m_records.size() - m_sampleLimit));
 }
 
 void GraphPanel::discardAfter(std::int64_t step)

@@ -4,6 +4,7 @@
 /// quantity, with CSV and PNG export. Meant for a dock of its own; several can be open at once.
 
 #include "view/graph_quantity.h"
+#include "view/view_constants.h"
 #include "view/step_sample.h"
 
 #include <QPoint>
@@ -61,6 +62,10 @@ public:
 
     /// The records kept, oldest first.
     const std::vector<GraphRecord>& records() const { return m_records; }
+    /// Keeps at least the last `most` records (kMaxGraphSamples unless set): once there are
+    /// kGraphTrimShare × `most` more, the oldest are dropped down to `most`, all at once.
+    void setSampleLimit(std::size_t most);
+    std::size_t sampleLimit() const { return m_sampleLimit; }
     /// A title for the dock: "vy of ball", "vx against x of ball".
     QString title() const;
 
@@ -103,6 +108,8 @@ private:
     void fillBodies();
     /// Redraws the series now.
     void redraw();
+    /// Drops the oldest records once there are well more than m_sampleLimit (setSampleLimit).
+    void trimRecords();
     /// Redraws soon (at most every constants::kGraphRefreshMs while running).
     void scheduleRedraw();
     void exportCsvInteractively();
@@ -115,6 +122,7 @@ private:
     GraphQuantity m_y;
     GraphQuantity m_x;
     std::vector<GraphRecord> m_records;
+    std::size_t m_sampleLimit = constants::kMaxGraphSamples;
     QComboBox* m_bodyBox;
     QComboBox* m_yBox;
     QComboBox* m_xBox;

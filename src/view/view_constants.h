@@ -302,6 +302,10 @@ inline constexpr double kTracedPointPickPx = 8.0;
 
 /// Graphs: the most samples one graph keeps (1 h at the default step); the oldest go first.
 inline constexpr std::size_t kMaxGraphSamples = 864000;
+/// A graph drops its oldest samples once it holds this share of kMaxGraphSamples more, all at once
+/// (7.5 min of samples at the default step): dropping the few of each frame from the front of an
+/// hour's samples moved the whole hour in memory (about 170 MB) at every frame.
+inline constexpr double kGraphTrimShare = 0.125;
 /// A graph redraws its series at most this often while running, ms: Qt Charts redraws a series
 /// of thousands of points slower than the physics adds them.
 inline constexpr int kGraphRefreshMs = 100;

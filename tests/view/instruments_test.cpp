@@ -96,6 +96,7 @@ private slots:
     void graphExportsAPictureAndFollowsTheTimeline();
     void pendulumPeriodReadOffTheGraphToAMillisecond();
     void twoGraphsAtOnceWithAPhasePlotOfTheSpring();
+    void aFullGraphDropsItsOldestSamplesInOneGo();
     void rulerBetweenTwoClicksReadsTheDistance();
     void protractorReadsTheAngle();
     void probeFollowsAFallingBall();
@@ -515,6 +516,39 @@ void InstrumentsTest::twoGraphsAtOnceWithAPhasePlotOfTheSpring()
         widest = std::max(widest, std::abs(p.y()));
     }
     QVERIFY(std::abs(widest - omega) < 1e-3); // the vx semi-axis: ω·A
+}
+
+// A graph keeps its last hour (kMaxGraphSamples); past that, the oldest samples go in chunks of an
+// eighth of it, not a few each frame (which moved the whole hour, 170 MB, at every frame). Here
+// with a limit of 80 samples for the test: it grows to 90, then drops to the last 80, and what it
+// keeps are the latest steps in order.
+void InstrumentsTest::aFullGraphDropsItsOldestSamplesInOneGo()
+{
+    MainWindow window;
+    window.setScene(fallingBallWorld(), QStringLiteral("falling"));
+    QVERIFY(showActive(window));
+    window.document().setSelection(impetus::view::Selection{{0}, {}, {}});
+    window.newGraphAction()->trigger();
+    GraphPanel* graph = window.graphPanels().front();
+    QCOMPARE(graph->sampleLimit(), constants::kMaxGraphSamples);
+    graph->setSampleLimit(80);
+    const auto steps = [&] {
+        std::vector<std::int64_t> taken;
+        for (const impetus::view::GraphRecord& record : graph->records())
+            taken.push_back(record.step);
+        return taken;
+    };
+    window.runner().stepBy(89); // the start and 89 steps: 90 records, 80 + an eighth of 80
+    QCOMPARE(graph->records().size(), std::size_t{90});
+    QCOMPARE(graph->records().front().step, std::int64_t{0});
+    window.runner().stepBy(1); // 91: the last 80 stay
+    QCOMPARE(graph->records().size(), std::size_t{80});
+    window.runner().stepBy(1); // and grow again one a step
+    std::vector<std::int64_t> kept = steps();
+    QCOMPARE(kept.size(), std::size_t{81});
+    QCOMPARE(kept.front(), std::int64_t{11});
+    QCOMPARE(kept.back(), std::int64_t{91});
+    QVERIFY(std::adjacent_find(kept.begin(), kept.end(), [](auto a, auto b) { return b != a + 1; }) == kept.end());
 }
 
 void InstrumentsTest::rulerBetweenTwoClicksReadsTheDistance()
