@@ -608,6 +608,9 @@ void PropertyPane::buildSpringPage()
     addNumber(Page::Spring, form, QStringLiteral("springRestLength"), tr("Rest length"), tr("m"),
               Bound::NonNegative, [this] { return m_spring.restLength; },
               editSpring([](model::Spring& s, double v) { s.restLength = v; }, tr("Change rest length")));
+    // A spring too stiff for the step, said where its stiffness is typed (the world page lists it too).
+    m_springWarnings = makeMessageLabel(QStringLiteral("springWarnings"), tr("Warnings"));
+    form->addRow(m_springWarnings);
 }
 
 void PropertyPane::buildJointPage()
@@ -1044,6 +1047,13 @@ void PropertyPane::load(const model::World& world)
         m_spring = world.springs[static_cast<std::size_t>(spring)];
         m_endNameA = nameOf(m_spring.bodyA);
         m_endNameB = nameOf(m_spring.bodyB);
+        QStringList lines;
+        const std::string path = "springs[" + std::to_string(spring) + "]";
+        for (const model::SceneProblem& warning : model::sceneWarnings(world)) {
+            if (warning.path == path)
+                lines << tr("Warning: %1").arg(QString::fromStdString(warning.reason));
+        }
+        m_springWarningText = lines.join(QLatin1Char('\n'));
     } else if (const int joint = firstValid(m_selection.joints, world.joints.size()); joint >= 0) {
         m_page = Page::Joint;
         m_index = joint;
@@ -1273,6 +1283,8 @@ void PropertyPane::displaySpring()
     m_title->setText(tr("Spring %1").arg(m_index));
     m_springBodyA->setText(m_endNameA);
     m_springBodyB->setText(m_endNameB);
+    m_springWarnings->setText(m_springWarningText);
+    m_springWarnings->setVisible(!m_springWarningText.isEmpty());
     QFormLayout* form = m_forms[static_cast<std::size_t>(Page::Spring)];
     if (auto* label = qobject_cast<QLabel*>(form->labelForField(m_springAnchorBRow)))
         label->setText(m_spring.bodyB ? tr("Anchor B (body frame)") : tr("Anchor B (world point)"));

@@ -196,6 +196,7 @@ private:
     QString m_softDensityShown; ///< the text last put in the ellipses-per-m² field
     QString m_softGridText; ///< the shown soft body's ellipse count and density, or empty
     QString m_worldWarningText; ///< settings outside the tested ranges (model::sceneWarnings), or empty
+    QString m_springWarningText; ///< the shown spring's own warnings (too stiff for the step), or empty
     model::EnergyBaseline m_energyBaseline; ///< the world's energy at step 0, to warn when a run adds energy
     QLocale m_locale; ///< the user's locale, without group separators
 
@@ -228,6 +229,7 @@ private:
     std::array<QCheckBox*, kVectorKindCount> m_bodyVectors{}; ///< "Show vectors", by VectorKind
     std::function<bool(const std::string&, VectorKind)> m_bodyVectorsShown;
     QLabel* m_worldWarnings = nullptr; ///< world page: why the settings may give wrong results
+    QLabel* m_springWarnings = nullptr; ///< spring page: why this spring may give wrong results
     NumberField* m_softStiffness = nullptr;
     NumberField* m_softDamping = nullptr; ///< c of each grid spring, N·s/m
     NumberField* m_softDampingRatio = nullptr; ///< ζ, dimensionless

@@ -4,6 +4,8 @@
 #include "test_settings.h"
 #include "view/main_window.h"
 #include "view/property_pane.h"
+#include "view/scene_document.h"
+#include "view/simulation_runner.h"
 
 #include <QFile>
 #include <QLabel>
@@ -39,6 +41,12 @@ constexpr const char* kEulerBallScene =
     R"({"name": "ball", "shape": {"type": "circle", "radius": 0.3}, "position": [0, 1.3],)"
     R"( "restitution": 1, "friction": 0}]})";
 
+/// A 1 kg box hanging from a world point by a spring of 100 N/m, under RK4 at the default step.
+constexpr const char* kSpringScene =
+    R"({"format": "impetus-scene", "version": 1, "bodies": [)"
+    R"({"name": "box", "shape": {"type": "box", "width": 0.5, "height": 0.5}, "position": [0, 1], "mass": 1}],)"
+    R"( "springs": [{"bodyA": "box", "anchorA": [0, 0], "anchorB": [0, 2], "stiffness": 100, "restLength": 0.5}]})";
+
 void typeAndEnter(QLineEdit* edit, const QString& text)
 {
     edit->setFocus();
@@ -57,6 +65,7 @@ private slots:
     void massRatioOfTouchingBodiesIsWarnedOnTheWorldPage();
     void gravityTypedOutOfRangeShowsAWarningUntilItIsBack();
     void energyGrowingUnderExplicitEulerIsWarned();
+    void springTooStiffForTheStepIsWarnedOnItsPage();
 
 private:
     /// Writes `text` to a file in m_dir and opens it in `window`; false when it did not open.
@@ -138,4 +147,34 @@ void SettingWarningsTest::energyGrowingUnderExplicitEulerIsWarned()
 }
 
 QTEST_MAIN(SettingWarningsTest)
+// A teacher types a stiffness of 10⁶ N/m for a 1 kg box: ω = 1000 rad/s, ω·h = 4.17 at 1/240 s,
+// past RK4's 2√2. The spring's own page says so under the field, and names the longest step that
+// holds; a stiffness back in range takes the warning away.
+void SettingWarningsTest::springTooStiffForTheStepIsWarnedOnItsPage()
+{
+    MainWindow window;
+    QVERIFY(open(window, kSpringScene));
+    window.show();
+    window.document().setSelection(impetus::view::Selection{{}, {0}, {}});
+    auto* pane = window.findChild<PropertyPane*>();
+    QVERIFY(pane);
+    auto* warnings = pane->findChild<QLabel*>(QStringLiteral("springWarnings"));
+    auto* stiffness = pane->findChild<QLineEdit*>(QStringLiteral("springStiffness"));
+    QVERIFY(warnings && stiffness);
+    QVERIFY(stiffness->isVisible());
+    QVERIFY(!warnings->isVisible());
+
+    typeAndEnter(stiffness, QStringLiteral("1000000"));
+    QTRY_VERIFY(warnings->isVisible());
+    QCOMPARE(window.runner().world().springs[0].stiffness, 1e6);
+    QVERIFY2(warnings->text().startsWith(QStringLiteral("Warning: k = 1e+06 N/m on 1 kg (the ends' effective mass "
+                                                        "along it) it oscillates at ω = √(k/m) = 1e+03 rad/s: "
+                                                        "ω·h = 4.17 at the step of 4.17 ms, above the 2.83 at which RK4")),
+             qPrintable(warnings->text()));
+    QVERIFY2(warnings->text().contains(QStringLiteral("make the step at most 2.83 ms")), qPrintable(warnings->text()));
+
+    typeAndEnter(stiffness, QStringLiteral("1000"));
+    QTRY_VERIFY(!warnings->isVisible());
+}
+
 #include "setting_warnings_test.moc"
