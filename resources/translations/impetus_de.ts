@@ -1087,6 +1087,18 @@
         <source>Remove question %1</source>
         <translation>Frage %1 entfernen</translation>
     </message>
+    <message>
+        <source>the world</source>
+        <translation>der Welt</translation>
+    </message>
+    <message>
+        <source>Spring %1 (%2 to %3)</source>
+        <translation>Feder %1 (zwischen %2 und %3)</translation>
+    </message>
+    <message>
+        <source>Change what students may change of spring %1</source>
+        <translation>Ändern, was an Feder %1 änderbar ist</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonPanel</name>
@@ -1194,10 +1206,6 @@
         <translation>Von der Lektion gesperrt: diese Einstellung (%1) lässt sich nicht ändern.</translation>
     </message>
     <message>
-        <source>Locked by the lesson: springs and joints can&apos;t be changed.</source>
-        <translation>Von der Lektion gesperrt: Federn und Gelenke lassen sich nicht ändern.</translation>
-    </message>
-    <message>
         <source>Locked by the lesson: “%1” can&apos;t be turned.</source>
         <translation>Von der Lektion gesperrt: „%1“ lässt sich nicht drehen.</translation>
     </message>
@@ -1228,6 +1236,22 @@
     <message>
         <source>Locked by the lesson. You may change the %1.</source>
         <translation>Von der Lektion gesperrt. Änderbar: %1.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: joints can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: Gelenke lassen sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 of spring %2 can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: Feder %2 (%1) lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: spring %1 can&apos;t be joined to other bodies.</source>
+        <translation>Von der Lektion gesperrt: Feder %1 lässt sich nicht an andere Körper hängen.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this spring can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: diese Feder lässt sich nicht ändern.</translation>
     </message>
 </context>
 <context>
@@ -1295,6 +1319,22 @@
     <message>
         <source>drag</source>
         <translation>Luftwiderstand</translation>
+    </message>
+    <message>
+        <source>stiffness</source>
+        <translation>Federkonstante</translation>
+    </message>
+    <message>
+        <source>damping</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <source>rest length</source>
+        <translation>Ruhelänge</translation>
+    </message>
+    <message>
+        <source>anchors</source>
+        <translation>Befestigungspunkte</translation>
     </message>
 </context>
 <context>

@@ -1087,6 +1087,18 @@
         <source>Remove question %1</source>
         <translation>Quitar la pregunta %1</translation>
     </message>
+    <message>
+        <source>the world</source>
+        <translation>el mundo</translation>
+    </message>
+    <message>
+        <source>Spring %1 (%2 to %3)</source>
+        <translation>Muelle %1 (entre %2 y %3)</translation>
+    </message>
+    <message>
+        <source>Change what students may change of spring %1</source>
+        <translation>Cambiar qué pueden cambiar los alumnos del muelle %1</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonPanel</name>
@@ -1194,10 +1206,6 @@
         <translation>Bloqueado por la lección: este ajuste (%1) no se puede cambiar.</translation>
     </message>
     <message>
-        <source>Locked by the lesson: springs and joints can&apos;t be changed.</source>
-        <translation>Bloqueado por la lección: no se pueden cambiar los muelles ni las uniones.</translation>
-    </message>
-    <message>
         <source>Locked by the lesson: “%1” can&apos;t be turned.</source>
         <translation>Bloqueado por la lección: «%1» no se puede girar.</translation>
     </message>
@@ -1228,6 +1236,22 @@
     <message>
         <source>Locked by the lesson. You may change the %1.</source>
         <translation>Bloqueado por la lección. Puedes cambiar: %1.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: joints can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: no se pueden cambiar las uniones.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 of spring %2 can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: no se puede cambiar el muelle %2 (%1).</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: spring %1 can&apos;t be joined to other bodies.</source>
+        <translation>Bloqueado por la lección: el muelle %1 no se puede unir a otros cuerpos.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this spring can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: este muelle no se puede cambiar.</translation>
     </message>
 </context>
 <context>
@@ -1295,6 +1319,22 @@
     <message>
         <source>drag</source>
         <translation>rozamiento del aire</translation>
+    </message>
+    <message>
+        <source>stiffness</source>
+        <translation>constante elástica</translation>
+    </message>
+    <message>
+        <source>damping</source>
+        <translation>amortiguación</translation>
+    </message>
+    <message>
+        <source>rest length</source>
+        <translation>longitud en reposo</translation>
+    </message>
+    <message>
+        <source>anchors</source>
+        <translation>puntos de anclaje</translation>
     </message>
 </context>
 <context>

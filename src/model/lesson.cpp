@@ -3,6 +3,7 @@
 #include "model/world.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 namespace impetus::model {
@@ -16,6 +17,9 @@ constexpr std::array<std::string_view, kBodyAttributeCount> kBodyAttributeNames 
 constexpr std::array<std::string_view, kWorldAttributeCount> kWorldAttributeNames = {"gravity", "integrator",
                                                                                      "timeStep", "drag"};
 
+constexpr std::array<std::string_view, kSpringAttributeCount> kSpringAttributeNames = {"stiffness", "damping",
+                                                                                       "restLength", "anchors"};
+
 template <class Attribute, std::size_t N>
 std::optional<Attribute> fromName(std::string_view name, const std::array<std::string_view, N>& names)
 {
@@ -24,6 +28,43 @@ std::optional<Attribute> fromName(std::string_view name, const std::array<std::s
         return std::nullopt;
     return static_cast<Attribute>(it - names.begin());
 }
+
+/// Makes `attributes` exactly the set of the entry for `key` in `entries` (sorted by `key`): an
+/// empty set removes the entry. EditableBody and EditableSpring alike.
+template <class Entry, class Key, class Attributes, class KeyOf>
+void setEntry(std::vector<Entry>& entries, Key key, Attributes attributes, KeyOf keyOf)
+{
+    const auto it = std::ranges::lower_bound(entries, key, {}, keyOf);
+    const bool present = it != entries.end() && std::invoke(keyOf, *it) == key;
+    if (attributes.none()) {
+        if (present)
+            entries.erase(it);
+    } else if (present) {
+        it->attributes = attributes;
+    } else {
+        entries.insert(it, Entry{key, attributes});
+    }
+}
+
+/// An entry's index moved down by `below` places.
+void renumber(EditableBody& entry, std::size_t below) { entry.body.index -= static_cast<std::uint32_t>(below); }
+void renumber(EditableSpring& entry, std::size_t below) { entry.spring -= below; }
+
+/// Drops the entries whose index `indexOf` is flagged in `removed` and renumbers the rest as
+/// the items that stay close up.
+template <class Entry, class IndexOf>
+void removeEntries(std::vector<Entry>& entries, const std::vector<bool>& removed, IndexOf indexOf)
+{
+    std::erase_if(entries, [&](const Entry& entry) {
+        const std::size_t index = indexOf(entry);
+        return index >= removed.size() || removed[index];
+    });
+    for (Entry& entry : entries) {
+        const auto below = std::count(removed.begin(), removed.begin() + static_cast<std::ptrdiff_t>(indexOf(entry)), true);
+        renumber(entry, static_cast<std::size_t>(below));
+    }
+}
+
 
 } // namespace
 
@@ -42,6 +83,16 @@ std::optional<BodyAttribute> bodyAttributeFromName(std::string_view name)
 std::optional<WorldAttribute> worldAttributeFromName(std::string_view name)
 {
     return fromName<WorldAttribute>(name, kWorldAttributeNames);
+}
+
+std::string_view attributeName(SpringAttribute attribute)
+{
+    return kSpringAttributeNames[static_cast<std::size_t>(attribute)];
+}
+
+std::optional<SpringAttribute> springAttributeFromName(std::string_view name)
+{
+    return fromName<SpringAttribute>(name, kSpringAttributeNames);
 }
 
 bool LessonQuestion::accepts(Scalar value) const
@@ -65,27 +116,33 @@ bool Lesson::allows(WorldAttribute attribute) const { return editableWorld.test(
 
 void Lesson::setEditable(BodyId body, BodyAttributes attributes)
 {
-    const auto it = std::ranges::lower_bound(editableBodies, body, {}, &EditableBody::body);
-    const bool present = it != editableBodies.end() && it->body == body;
-    if (attributes.none()) {
-        if (present)
-            editableBodies.erase(it);
-    } else if (present) {
-        it->attributes = attributes;
-    } else {
-        editableBodies.insert(it, EditableBody{body, attributes});
-    }
+    setEntry(editableBodies, body, attributes, &EditableBody::body);
 }
 
 void Lesson::removeBodies(const std::vector<bool>& removed)
 {
-    std::erase_if(editableBodies, [&](const EditableBody& entry) {
-        return entry.body.index >= removed.size() || removed[entry.body.index];
-    });
-    for (EditableBody& entry : editableBodies) {
-        const auto below = std::count(removed.begin(), removed.begin() + entry.body.index, true);
-        entry.body.index -= static_cast<std::uint32_t>(below);
-    }
+    removeEntries(editableBodies, removed, [](const EditableBody& entry) { return std::size_t{entry.body.index}; });
+}
+
+SpringAttributes Lesson::editableSpring(std::size_t spring) const
+{
+    const auto it = std::ranges::find(editableSprings, spring, &EditableSpring::spring);
+    return it == editableSprings.end() ? SpringAttributes() : it->attributes;
+}
+
+bool Lesson::allows(std::size_t spring, SpringAttribute attribute) const
+{
+    return editableSpring(spring).test(static_cast<std::size_t>(attribute));
+}
+
+void Lesson::setEditableSpring(std::size_t spring, SpringAttributes attributes)
+{
+    setEntry(editableSprings, spring, attributes, &EditableSpring::spring);
+}
+
+void Lesson::removeSprings(const std::vector<bool>& removed)
+{
+    removeEntries(editableSprings, removed, [](const EditableSpring& entry) { return entry.spring; });
 }
 
 BodyAttributes changedAttributes(const Body& before, const Body& after)
@@ -118,6 +175,22 @@ WorldAttributes changedAttributes(const WorldSettings& before, const WorldSettin
     changed.set(static_cast<std::size_t>(WorldAttribute::TimeStep), before.timeStep != after.timeStep);
     changed.set(static_cast<std::size_t>(WorldAttribute::Drag), before.drag != after.drag);
     return changed;
+}
+
+SpringAttributes changedAttributes(const Spring& before, const Spring& after)
+{
+    SpringAttributes changed;
+    changed.set(static_cast<std::size_t>(SpringAttribute::Stiffness), before.stiffness != after.stiffness);
+    changed.set(static_cast<std::size_t>(SpringAttribute::Damping), before.damping != after.damping);
+    changed.set(static_cast<std::size_t>(SpringAttribute::RestLength), before.restLength != after.restLength);
+    changed.set(static_cast<std::size_t>(SpringAttribute::Anchors),
+                before.anchorA != after.anchorA || before.anchorB != after.anchorB);
+    return changed;
+}
+
+bool changesEnds(const Spring& before, const Spring& after)
+{
+    return before.bodyA != after.bodyA || before.bodyB != after.bodyB;
 }
 
 } // namespace impetus::model

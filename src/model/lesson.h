@@ -7,6 +7,7 @@
 
 #include "model/body.h"
 #include "model/scalar.h"
+#include "model/spring.h"
 
 #include <array>
 #include <bitset>
@@ -60,11 +61,29 @@ inline constexpr std::size_t kWorldAttributeCount = 4;
 inline constexpr std::array<WorldAttribute, kWorldAttributeCount> kWorldAttributes = {
     WorldAttribute::Gravity, WorldAttribute::Integrator, WorldAttribute::TimeStep, WorldAttribute::Drag};
 
+/// What of a spring a lesson may leave editable (keys of a scene's spring).
+enum class SpringAttribute {
+    Stiffness, ///< "stiffness"
+    Damping, ///< "damping"
+    RestLength, ///< "restLength"
+    Anchors, ///< "anchors": anchorA and anchorB, where the spring is fixed on its bodies
+};
+
+/// The number of SpringAttribute values.
+inline constexpr std::size_t kSpringAttributeCount = 4;
+
+/// Every SpringAttribute, in the order of a spring's keys in the scene format.
+inline constexpr std::array<SpringAttribute, kSpringAttributeCount> kSpringAttributes = {
+    SpringAttribute::Stiffness, SpringAttribute::Damping, SpringAttribute::RestLength, SpringAttribute::Anchors};
+
 /// A set of body attributes, indexed by BodyAttribute.
 using BodyAttributes = std::bitset<kBodyAttributeCount>;
 
 /// A set of world attributes, indexed by WorldAttribute.
 using WorldAttributes = std::bitset<kWorldAttributeCount>;
+
+/// A set of spring attributes, indexed by SpringAttribute.
+using SpringAttributes = std::bitset<kSpringAttributeCount>;
 
 /// The scene-file name of a body attribute ("friction", "angularVelocity", …).
 std::string_view attributeName(BodyAttribute attribute);
@@ -74,12 +93,23 @@ std::string_view attributeName(WorldAttribute attribute);
 std::optional<BodyAttribute> bodyAttributeFromName(std::string_view name);
 /// Parses a world attribute's scene-file name; nullopt when unknown.
 std::optional<WorldAttribute> worldAttributeFromName(std::string_view name);
+/// The scene-file name of a spring attribute ("stiffness", "restLength", …).
+std::string_view attributeName(SpringAttribute attribute);
+/// Parses a spring attribute's scene-file name; nullopt when unknown.
+std::optional<SpringAttribute> springAttributeFromName(std::string_view name);
 
 /// A body students may change, and which of its attributes.
 struct EditableBody {
     BodyId body; ///< the body
     BodyAttributes attributes; ///< what of it students may change; never empty in a Lesson
     bool operator==(const EditableBody&) const = default; ///< memberwise equality
+};
+
+/// A spring students may change, and which of its attributes.
+struct EditableSpring {
+    std::size_t spring = 0; ///< index into World::springs
+    SpringAttributes attributes; ///< what of it students may change; never empty in a Lesson
+    bool operator==(const EditableSpring&) const = default; ///< memberwise equality
 };
 
 /// A question with a numeric answer: right when the student's value v satisfies
@@ -105,6 +135,9 @@ struct Lesson {
     /// with an empty attribute set.
     std::vector<EditableBody> editableBodies;
     WorldAttributes editableWorld; ///< the world settings students may change
+    /// The springs students may change, sorted by spring index, at most one entry per spring, none
+    /// with an empty attribute set. Joints, and springs not listed, are locked.
+    std::vector<EditableSpring> editableSprings;
     std::vector<LessonQuestion> questions; ///< in the order they are asked
     bool operator==(const Lesson&) const = default; ///< memberwise equality
 
@@ -122,6 +155,17 @@ struct Lesson {
     /// true and renumbers the others as the bodies that stay close up. `removed` has one flag per
     /// body of the world before the removal.
     void removeBodies(const std::vector<bool>& removed);
+
+    /// The attributes of spring `spring` that students may change (empty: the spring is locked).
+    SpringAttributes editableSpring(std::size_t spring) const;
+    /// True when students may change `attribute` of spring `spring`.
+    bool allows(std::size_t spring, SpringAttribute attribute) const;
+    /// Makes `attributes` exactly what students may change of spring `spring`; an empty set locks
+    /// it. Keeps editableSprings sorted and free of empty entries.
+    void setEditableSpring(std::size_t spring, SpringAttributes attributes);
+    /// Follows a removal of springs, as removeBodies() does for bodies: `removed` has one flag per
+    /// spring of the world before the removal.
+    void removeSprings(const std::vector<bool>& removed);
 };
 
 /// The attributes in which `after` differs from `before`: what an edit of a body changes.
@@ -131,5 +175,12 @@ BodyAttributes changedAttributes(const Body& before, const Body& after);
 
 /// The world settings in which `after` differs from `before`.
 WorldAttributes changedAttributes(const WorldSettings& before, const WorldSettings& after);
+
+/// The attributes in which spring `after` differs from `before`. Its bodies are not an attribute:
+/// a spring moved to other bodies is `changesEnds`.
+SpringAttributes changedAttributes(const Spring& before, const Spring& after);
+
+/// True when `after` joins other bodies than `before` (which no lesson leaves editable).
+bool changesEnds(const Spring& before, const Spring& after);
 
 } // namespace impetus::model

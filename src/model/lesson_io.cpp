@@ -15,9 +15,10 @@ namespace {
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 5> kLessonKeys = {"title", "instructions", "editable", "editableWorld",
-                                                         "questions"};
+constexpr std::array<std::string_view, 6> kLessonKeys = {"title",         "instructions",    "editable",
+                                                         "editableWorld", "editableSprings", "questions"};
 constexpr std::array<std::string_view, 2> kEditableKeys = {"body", "attributes"};
+constexpr std::array<std::string_view, 2> kEditableSpringKeys = {"spring", "attributes"};
 constexpr std::array<std::string_view, 4> kQuestionKeys = {"prompt", "answer", "unit", "tolerance"};
 
 /// Strings from the file quoted in a message are cut to this many bytes, so a stray long value
@@ -67,6 +68,8 @@ public:
             readEditable(*editable, path + ".editable", lesson);
         if (const Json* world = find(value, "editableWorld"))
             readEditableWorld(*world, path + ".editableWorld", lesson.editableWorld);
+        if (const Json* springs = find(value, "editableSprings"))
+            readEditableSprings(*springs, path + ".editableSprings", lesson);
         if (const Json* questions = find(value, "questions"))
             readQuestions(*questions, path + ".questions", lesson.questions);
         if (m_problems.size() != before)
@@ -202,6 +205,52 @@ private:
         }
     }
 
+    void readEditableSprings(const Json& value, const std::string& path, Lesson& lesson)
+    {
+        if (!isArray(value, path))
+            return;
+        const std::size_t springs = m_world.springs.size();
+        std::vector<std::string> seenAt(springs);
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            const std::string entryPath = path + '[' + std::to_string(i) + ']';
+            const Json& entry = value[i];
+            if (!isObject(entry, entryPath))
+                continue;
+            checkKeys(entry, entryPath, kEditableSpringKeys);
+            std::size_t spring = 0;
+            bool known = false;
+            if (const Json* index = required(entry, "spring", entryPath)) {
+                const std::string indexPath = entryPath + ".spring";
+                if (!index->is_number_integer()) {
+                    report(indexPath, "expected the index of a spring (a whole number), got " + kindOf(*index));
+                } else if (index->is_number_unsigned() ? index->get<std::uint64_t>() >= springs
+                                                       : index->get<std::int64_t>() < 0 ||
+                                                             static_cast<std::uint64_t>(index->get<std::int64_t>()) >= springs) {
+                    report(indexPath, "no spring " + index->dump() + " (the scene has " + std::to_string(springs) +
+                                          (springs == 1 ? " spring, index 0)" : " springs, indices from 0)"));
+                } else {
+                    spring = static_cast<std::size_t>(index->get<std::uint64_t>());
+                    if (!seenAt[spring].empty()) {
+                        report(indexPath, "spring " + std::to_string(spring) + " is listed twice (" + seenAt[spring] +
+                                              " already lists it)");
+                    } else {
+                        seenAt[spring] = entryPath;
+                        known = true;
+                    }
+                }
+            }
+            SpringAttributes attributes;
+            if (const Json* list = required(entry, "attributes", entryPath)) {
+                attributes = readNames<SpringAttribute, kSpringAttributeCount>(
+                    *list, entryPath + ".attributes", springAttributeFromName, kSpringAttributes);
+                if (list->is_array() && list->empty())
+                    report(entryPath + ".attributes", "must list at least one attribute (leave the spring out to lock it)");
+            }
+            if (known && attributes.any())
+                lesson.setEditableSpring(spring, attributes);
+        }
+    }
+
     void readEditableWorld(const Json& value, const std::string& path, WorldAttributes& attributes)
     {
         attributes = readNames<WorldAttribute, kWorldAttributeCount>(value, path, worldAttributeFromName,
@@ -313,6 +362,16 @@ nlohmann::ordered_json lessonJson(const Lesson& lesson, const World& world)
     }
     out["editable"] = std::move(editable);
     out["editableWorld"] = namesJson(lesson.editableWorld, kWorldAttributes);
+    OrderedJson springs = OrderedJson::array();
+    for (const EditableSpring& entry : lesson.editableSprings) {
+        if (entry.spring >= world.springs.size() || entry.attributes.none())
+            continue;
+        OrderedJson item = OrderedJson::object();
+        item["spring"] = entry.spring;
+        item["attributes"] = namesJson(entry.attributes, kSpringAttributes);
+        springs.push_back(std::move(item));
+    }
+    out["editableSprings"] = std::move(springs);
     OrderedJson questions = OrderedJson::array();
     for (const LessonQuestion& question : lesson.questions) {
         OrderedJson item = OrderedJson::object();

@@ -47,6 +47,10 @@ constexpr int kIndexRole = Qt::UserRole;
 /// The lock tree's top-level item of the world settings.
 constexpr int kWorldItem = -1;
 
+/// The item data role that is true on a spring's top-level item (whose kIndexRole is then the
+/// spring's index) and on its attributes.
+constexpr int kSpringRole = Qt::UserRole + 1;
+
 Qt::CheckState checkState(bool on) { return on ? Qt::Checked : Qt::Unchecked; }
 
 /// The state of a top-level item from its children: all, some or none ticked.
@@ -166,15 +170,26 @@ void LessonEditor::refreshLocks()
 {
     const model::World& world = m_session.document().world();
     const std::optional<model::Lesson>& lesson = m_session.lesson();
+    // The tree's items: every body by name, then every spring by its ends.
     std::vector<std::string> names;
-    names.reserve(world.bodies.size());
+    names.reserve(world.bodies.size() + world.springs.size());
     for (const model::Body& body : world.bodies)
         names.push_back(body.name);
+    const auto endName = [&world](std::optional<model::BodyId> body) {
+        return body && body->index < world.bodies.size() ? QStringLiteral("“%1”").arg(QString::fromStdString(world.body(*body).name))
+                                                          : tr("the world");
+    };
+    std::vector<QString> springLabels;
+    for (std::size_t i = 0; i < world.springs.size(); ++i) {
+        const model::Spring& spring = world.springs[i];
+        springLabels.push_back(tr("Spring %1 (%2 to %3)").arg(i).arg(endName(spring.bodyA), endName(spring.bodyB)));
+        names.push_back(springLabels.back().toStdString());
+    }
     if (names == m_lockNames && lesson == m_lockLesson)
         return;
     const QSignalBlocker blocker(m_locks);
-    // A new set of bodies gets a new tree; otherwise the boxes are ticked in place, because this
-    // may run inside itemChanged of one of them.
+    // A new set of bodies or springs gets a new tree; otherwise the boxes are ticked in place,
+    // because this may run inside itemChanged of one of them.
     if (names != m_lockNames || m_locks->topLevelItemCount() != static_cast<int>(names.size()) + 1) {
         m_locks->clear();
         auto* worldItem = new QTreeWidgetItem(m_locks, {tr("World settings")});
@@ -183,7 +198,7 @@ void LessonEditor::refreshLocks()
             auto* child = new QTreeWidgetItem(worldItem, {attributeTitle(attribute)});
             child->setData(0, kIndexRole, static_cast<int>(attribute));
         }
-        for (std::size_t i = 0; i < names.size(); ++i) {
+        for (std::size_t i = 0; i < world.bodies.size(); ++i) {
             auto* bodyItem = new QTreeWidgetItem(m_locks, {QStringLiteral("“%1”").arg(QString::fromStdString(names[i]))});
             bodyItem->setData(0, kIndexRole, static_cast<int>(i));
             for (const model::BodyAttribute attribute : model::kBodyAttributes) {
@@ -191,17 +206,32 @@ void LessonEditor::refreshLocks()
                 child->setData(0, kIndexRole, static_cast<int>(attribute));
             }
         }
+        for (std::size_t i = 0; i < springLabels.size(); ++i) {
+            auto* springItem = new QTreeWidgetItem(m_locks, {springLabels[i]});
+            springItem->setData(0, kIndexRole, static_cast<int>(i));
+            springItem->setData(0, kSpringRole, true);
+            for (const model::SpringAttribute attribute : model::kSpringAttributes) {
+                auto* child = new QTreeWidgetItem(springItem, {attributeTitle(attribute)});
+                child->setData(0, kIndexRole, static_cast<int>(attribute));
+                child->setData(0, kSpringRole, true);
+            }
+        }
     }
     for (int top = 0; top < m_locks->topLevelItemCount(); ++top) {
         QTreeWidgetItem* parent = m_locks->topLevelItem(top);
         const int index = parent->data(0, kIndexRole).toInt();
+        const bool spring = parent->data(0, kSpringRole).toBool();
         for (int i = 0; i < parent->childCount(); ++i) {
             QTreeWidgetItem* child = parent->child(i);
             const auto bit = static_cast<std::size_t>(child->data(0, kIndexRole).toInt());
             bool on = false;
             if (lesson) {
-                on = index == kWorldItem ? lesson->editableWorld.test(bit)
-                                         : lesson->editable(model::BodyId{static_cast<std::uint32_t>(index)}).test(bit);
+                if (spring)
+                    on = lesson->editableSpring(static_cast<std::size_t>(index)).test(bit);
+                else if (index == kWorldItem)
+                    on = lesson->editableWorld.test(bit);
+                else
+                    on = lesson->editable(model::BodyId{static_cast<std::uint32_t>(index)}).test(bit);
             }
             child->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
             child->setCheckState(0, checkState(on));
@@ -298,7 +328,14 @@ void LessonEditor::onLockChanged(QTreeWidgetItem* item)
     const int index = parent->data(0, kIndexRole).toInt();
     model::Lesson lesson = *current;
     QString actionName;
-    if (index == kWorldItem) {
+    if (parent->data(0, kSpringRole).toBool()) {
+        model::SpringAttributes attributes;
+        for (int i = 0; i < parent->childCount(); ++i)
+            attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),
+                           parent->child(i)->checkState(0) == Qt::Checked);
+        lesson.setEditableSpring(static_cast<std::size_t>(index), attributes);
+        actionName = tr("Change what students may change of spring %1").arg(index);
+    } else if (index == kWorldItem) {
         model::WorldAttributes attributes;
         for (int i = 0; i < parent->childCount(); ++i)
             attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),

@@ -26,7 +26,8 @@ enum class LessonTyping;
 
 /// The lesson editor: the title ("lessonTitleEdit"), the instructions in plain text or simple
 /// Markdown ("lessonInstructionsEdit"), what students may change ("lessonLocksTree": the world
-/// settings and every body, each with its attributes as check boxes; a ticked box is unlocked)
+/// settings, every body and every spring, each with its attributes as check boxes; a ticked box is
+/// unlocked)
 /// and the questions ("lessonQuestionsTable": prompt, answer, unit, tolerance), with Add Question
 /// ("addQuestion") and Remove Question ("removeQuestion").
 ///
@@ -74,7 +75,7 @@ private:
     QPushButton* m_addQuestion = nullptr;
     QPushButton* m_removeQuestion = nullptr;
     QLabel* m_message = nullptr;
-    /// What the lock tree shows: the body names and the lesson's editable sets.
+    /// What the lock tree shows: the body names and spring labels, and the lesson's editable sets.
     std::vector<std::string> m_lockNames;
     std::optional<model::Lesson> m_lockLesson;
 };

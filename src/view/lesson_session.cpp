@@ -92,7 +92,38 @@ std::optional<QString> LessonSession::connectionLock() const
 {
     if (!locksInForce())
         return std::nullopt;
-    return tr("Locked by the lesson: springs and joints can't be changed.");
+    return tr("Locked by the lesson: joints can't be changed.");
+}
+
+std::optional<QString> LessonSession::springLock(int spring, model::SpringAttribute attribute) const
+{
+    if (!locksInForce() || (spring >= 0 && lesson()->allows(static_cast<std::size_t>(spring), attribute)))
+        return std::nullopt;
+    return tr("Locked by the lesson: the %1 of spring %2 can't be changed.").arg(attributeTitle(attribute)).arg(spring);
+}
+
+std::optional<QString> LessonSession::refusal(int spring, const model::Spring& before, const model::Spring& after) const
+{
+    if (locksInForce() && model::changesEnds(before, after))
+        return tr("Locked by the lesson: spring %1 can't be joined to other bodies.").arg(spring);
+    const model::SpringAttributes changed = model::changedAttributes(before, after);
+    for (const model::SpringAttribute attribute : model::kSpringAttributes) {
+        if (!changed.test(static_cast<std::size_t>(attribute)))
+            continue;
+        if (std::optional<QString> lock = springLock(spring, attribute))
+            return lock;
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> LessonSession::springNote(int spring) const
+{
+    if (!locksInForce() || spring < 0)
+        return std::nullopt;
+    const model::SpringAttributes editable = lesson()->editableSpring(static_cast<std::size_t>(spring));
+    if (editable.none())
+        return tr("Locked by the lesson: this spring can't be changed.");
+    return tr("Locked by the lesson. You may change its %1.").arg(springAttributeList(editable));
 }
 
 std::optional<QString> LessonSession::poseLock(const std::vector<int>& bodies, bool moves, bool turns) const

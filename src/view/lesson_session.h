@@ -54,8 +54,12 @@ public:
     std::optional<QString> refusal(int body, const model::Body& before, const model::Body& after) const;
     /// Why the edit of the world settings from `before` to `after` is refused, or nullopt.
     std::optional<QString> refusal(const model::WorldSettings& before, const model::WorldSettings& after) const;
-    /// Why springs and joints cannot be changed now (a lesson locks all of them), or nullopt.
+    /// Why joints cannot be changed now (a lesson locks all of them), or nullopt.
     std::optional<QString> connectionLock() const;
+    /// Why students may not change `attribute` of spring `spring` now, or nullopt when they may.
+    std::optional<QString> springLock(int spring, model::SpringAttribute attribute) const;
+    /// Why the edit of spring `spring` from `before` to `after` is refused, or nullopt when allowed.
+    std::optional<QString> refusal(int spring, const model::Spring& before, const model::Spring& after) const;
     /// Why `bodies` cannot be moved (`moves`) or turned (`turns`) on the canvas now, or nullopt.
     /// Turning several bodies turns them about their common centre, so it moves them as well.
     std::optional<QString> poseLock(const std::vector<int>& bodies, bool moves, bool turns) const;
@@ -69,6 +73,8 @@ public:
     std::optional<QString> bodyNote(int body) const;
     /// What the attribute pane says about the world settings, or nullopt.
     std::optional<QString> worldNote() const;
+    /// What the attribute pane says about spring `spring`, or nullopt.
+    std::optional<QString> springNote(int spring) const;
 
 signals:
     /// Lesson › Edit was turned on or off.

@@ -53,25 +53,45 @@ QString attributeTitle(model::WorldAttribute attribute)
     return {};
 }
 
-QString attributeList(const model::BodyAttributes& attributes)
+QString attributeTitle(model::SpringAttribute attribute)
+{
+    switch (attribute) {
+    case model::SpringAttribute::Stiffness:
+        return QCoreApplication::translate("impetus::view::LessonText", "stiffness");
+    case model::SpringAttribute::Damping:
+        return QCoreApplication::translate("impetus::view::LessonText", "damping");
+    case model::SpringAttribute::RestLength:
+        return QCoreApplication::translate("impetus::view::LessonText", "rest length");
+    case model::SpringAttribute::Anchors:
+        return QCoreApplication::translate("impetus::view::LessonText", "anchors");
+    }
+    return {};
+}
+
+namespace {
+
+/// The titles of the attributes of `all` that are in `attributes`, in that order, joined by ", ".
+template <class Attribute, std::size_t N>
+QString joinedTitles(const std::bitset<N>& attributes, const std::array<Attribute, N>& all)
 {
     QStringList names;
-    for (const model::BodyAttribute attribute : model::kBodyAttributes) {
+    for (const Attribute attribute : all) {
         if (attributes.test(static_cast<std::size_t>(attribute)))
             names << attributeTitle(attribute);
     }
     return names.join(QStringLiteral(", "));
 }
 
-QString attributeList(const model::WorldAttributes& attributes)
+} // namespace
+
+QString springAttributeList(const model::SpringAttributes& attributes)
 {
-    QStringList names;
-    for (const model::WorldAttribute attribute : model::kWorldAttributes) {
-        if (attributes.test(static_cast<std::size_t>(attribute)))
-            names << attributeTitle(attribute);
-    }
-    return names.join(QStringLiteral(", "));
+    return joinedTitles(attributes, model::kSpringAttributes);
 }
+
+QString attributeList(const model::BodyAttributes& attributes) { return joinedTitles(attributes, model::kBodyAttributes); }
+
+QString attributeList(const model::WorldAttributes& attributes) { return joinedTitles(attributes, model::kWorldAttributes); }
 
 std::optional<double> parseLessonNumber(const QLocale& locale, const QString& text)
 {

@@ -169,6 +169,21 @@ std::optional<model::WorldAttribute> worldAttributeOf(const QString& name)
     return std::nullopt;
 }
 
+/// The lesson attribute that the spring field called `name` edits.
+std::optional<model::SpringAttribute> springAttributeOf(const QString& name)
+{
+    using A = model::SpringAttribute;
+    if (name == QLatin1String("springStiffness"))
+        return A::Stiffness;
+    if (name == QLatin1String("springDamping"))
+        return A::Damping;
+    if (name == QLatin1String("springRestLength"))
+        return A::RestLength;
+    if (name.startsWith(QLatin1String("springAnchor")))
+        return A::Anchors;
+    return std::nullopt;
+}
+
 } // namespace
 
 /// One numeric line edit bound to one model value.
@@ -662,7 +677,7 @@ PropertyPane::Apply PropertyPane::editSpring(std::function<void(model::Spring&, 
 {
     return editCopy(m_spring, std::move(set), [this, actionName](const model::Spring& spring) -> std::optional<QString> {
         if (m_lesson && spring != m_spring) {
-            if (std::optional<QString> lock = m_lesson->connectionLock())
+            if (std::optional<QString> lock = m_lesson->refusal(m_index, m_spring, spring))
                 return lock;
         }
         if (spring != m_spring) {
@@ -1137,7 +1152,10 @@ bool PropertyPane::locked(const QWidget* field) const
         const std::optional<model::WorldAttribute> attribute = worldAttributeOf(field->objectName());
         return attribute && m_lesson->worldLock(*attribute);
     }
-    case Page::Spring:
+    case Page::Spring: {
+        const std::optional<model::SpringAttribute> attribute = springAttributeOf(field->objectName());
+        return !attribute || m_lesson->springLock(m_index, *attribute);
+    }
     case Page::Joint:
         break;
     }
@@ -1156,6 +1174,8 @@ void PropertyPane::applyLocks()
             note = m_lesson->bodyNote(m_index);
             break;
         case Page::Spring:
+            note = m_lesson->springNote(m_index);
+            break;
         case Page::Joint:
             note = m_lesson->connectionLock();
             break;

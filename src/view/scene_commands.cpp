@@ -142,6 +142,10 @@ void RemoveCommand::redo()
             for (const auto& body : m_bodies)
                 flags[body.first] = true;
             world.lesson->removeBodies(flags);
+            std::vector<bool> springFlags(world.springs.size(), false);
+            for (const auto& spring : m_springs)
+                springFlags[spring.first] = true;
+            world.lesson->removeSprings(springFlags);
         }
         eraseAt(world.springs, m_springs);
         eraseAt(world.joints, m_joints);

@@ -13,12 +13,14 @@
 namespace impetus::model {
 namespace {
 
-/// A scene with a fixed floor and a ball, and `lesson` (JSON text) as its lesson, if not empty.
+/// A scene with a fixed floor and a ball hanging on a spring (spring 0) from a world point, and
+/// `lesson` (JSON text) as its lesson, if not empty.
 std::string sceneWithLesson(const std::string& lesson)
 {
     std::string text = R"({"format":"impetus-scene","version":1,"bodies":[)"
                        R"({"name":"floor","shape":{"type":"box","width":4,"height":0.2},"position":[0,0],"fixed":true},)"
-                       R"({"name":"ball","shape":{"type":"circle","radius":0.2},"position":[0,1]}])";
+                       R"({"name":"ball","shape":{"type":"circle","radius":0.2},"position":[0,1]}],)"
+                       R"("springs":[{"bodyA":"ball","anchorA":[0,0],"anchorB":[0,2],"stiffness":50}])";
     if (!lesson.empty())
         text += R"(,"lesson":)" + lesson;
     return text + "}";
@@ -47,6 +49,7 @@ constexpr const char* kFullLesson = R"({
   "instructions": "Push it **gently**.",
   "editable": [{"body": "ball", "attributes": ["velocity", "friction"]}],
   "editableWorld": ["gravity"],
+  "editableSprings": [{"spring": 0, "attributes": ["stiffness", "restLength"]}],
   "questions": [{"prompt": "How far does it roll?", "answer": 1.5, "unit": "m", "tolerance": 0.1},
                 {"prompt": "A pure number?", "answer": -2, "tolerance": 0.5}]
 })";
@@ -107,6 +110,25 @@ TEST(LessonWriting, RoundTripKeepsTheLesson)
     EXPECT_EQ(serializeScene(*second.world), text);
 }
 
+TEST(LessonReading, ReadsWhichSpringAttributesStudentsMayChange)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    const Lesson& lesson = *result.world->lesson;
+    ASSERT_EQ(lesson.editableSprings.size(), 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{0}, SpringAttribute::Stiffness));
+    EXPECT_TRUE(lesson.allows(std::size_t{0}, SpringAttribute::RestLength));
+    EXPECT_FALSE(lesson.allows(std::size_t{0}, SpringAttribute::Damping));
+    EXPECT_FALSE(lesson.allows(std::size_t{0}, SpringAttribute::Anchors));
+    EXPECT_FALSE(lesson.allows(std::size_t{1}, SpringAttribute::Stiffness));
+    const std::string text = serializeScene(*result.world);
+    EXPECT_NE(text.find(R"("editableSprings": [)"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("spring": 0,
+        "attributes": ["stiffness", "restLength"])"),
+              std::string::npos)
+        << text;
+}
+
 TEST(LessonWriting, FollowsARenamedBodyAndDropsARemovedOne)
 {
     SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
@@ -120,6 +142,7 @@ TEST(LessonWriting, FollowsARenamedBodyAndDropsARemovedOne)
     // The floor goes: the ball moves down to index 0 and keeps what it may change.
     world.lesson->removeBodies({true, false});
     world.bodies.erase(world.bodies.begin());
+    world.springs[0].bodyA = BodyId{0};
     SceneLoadResult removed = parseScene(serializeScene(world));
     ASSERT_TRUE(removed.ok()) << describe(removed.problems);
     EXPECT_TRUE(removed.world->lesson->allows(BodyId{0}, BodyAttribute::Friction));
@@ -168,6 +191,27 @@ const BadLesson kBadLessons[] = {
      "lesson.editable[0].attributes", "at least one attribute"},
     {"editable-world-unknown", R"({"title":"t","editableWorld":["wind"]})", "lesson.editableWorld[0]",
      "unknown attribute 'wind'"},
+    {"springs-not-an-array", R"({"title":"t","editableSprings":{"spring":0}})", "lesson.editableSprings",
+     "expected an array"},
+    {"spring-unknown-key", R"({"title":"t","editableSprings":[{"spring":0,"attributes":["damping"],"body":"ball"}]})",
+     "lesson.editableSprings[0]", "unknown key 'body'"},
+    {"spring-missing-index", R"({"title":"t","editableSprings":[{"attributes":["damping"]}]})",
+     "lesson.editableSprings[0]", "missing required key 'spring'"},
+    {"spring-out-of-range", R"({"title":"t","editableSprings":[{"spring":1,"attributes":["damping"]}]})",
+     "lesson.editableSprings[0].spring", "no spring 1 (the scene has 1 spring, index 0)"},
+    {"spring-negative", R"({"title":"t","editableSprings":[{"spring":-1,"attributes":["damping"]}]})",
+     "lesson.editableSprings[0].spring", "no spring -1"},
+    {"spring-not-whole", R"({"title":"t","editableSprings":[{"spring":0.5,"attributes":["damping"]}]})",
+     "lesson.editableSprings[0].spring", "expected the index of a spring (a whole number)"},
+    {"spring-by-name", R"({"title":"t","editableSprings":[{"spring":"ball","attributes":["damping"]}]})",
+     "lesson.editableSprings[0].spring", "expected the index of a spring"},
+    {"spring-twice",
+     R"({"title":"t","editableSprings":[{"spring":0,"attributes":["damping"]},{"spring":0,"attributes":["stiffness"]}]})",
+     "lesson.editableSprings[1].spring", "spring 0 is listed twice (lesson.editableSprings[0]"},
+    {"spring-unknown-attribute", R"({"title":"t","editableSprings":[{"spring":0,"attributes":["length"]}]})",
+     "lesson.editableSprings[0].attributes[0]", "unknown attribute 'length' (expected one of: stiffness, damping, restLength, anchors)"},
+    {"spring-no-attributes", R"({"title":"t","editableSprings":[{"spring":0,"attributes":[]}]})",
+     "lesson.editableSprings[0].attributes", "at least one attribute (leave the spring out to lock it)"},
     {"question-not-an-object", R"({"title":"t","questions":["why?"]})", "lesson.questions[0]",
      "expected an object"},
     {"question-unknown-key", R"({"title":"t","questions":[{"prompt":"p","answer":1,"tolerance":1,"hint":"h"}]})",
@@ -279,7 +323,46 @@ TEST(LessonType, AttributeNamesReadBack)
         EXPECT_EQ(bodyAttributeFromName(attributeName(attribute)), attribute);
     for (const WorldAttribute attribute : kWorldAttributes)
         EXPECT_EQ(worldAttributeFromName(attributeName(attribute)), attribute);
+    for (const SpringAttribute attribute : kSpringAttributes)
+        EXPECT_EQ(springAttributeFromName(attributeName(attribute)), attribute);
     EXPECT_FALSE(bodyAttributeFromName("colour").has_value());
+    EXPECT_FALSE(springAttributeFromName("length").has_value());
+}
+
+// Springs are listed by index: removing springs drops their entries and renumbers the rest, as
+// removing bodies does for bodies. An edit names what it changed; moving a spring to other bodies
+// is not an attribute at all.
+TEST(LessonType, SpringEntriesFollowRemovalsAndEditsNameTheirAttributes)
+{
+    Lesson lesson;
+    SpringAttributes stiffness;
+    stiffness.set(static_cast<std::size_t>(SpringAttribute::Stiffness));
+    SpringAttributes damping;
+    damping.set(static_cast<std::size_t>(SpringAttribute::Damping));
+    lesson.setEditableSpring(3, stiffness);
+    lesson.setEditableSpring(1, damping);
+    lesson.setEditableSpring(2, stiffness);
+    lesson.setEditableSpring(2, SpringAttributes());
+    ASSERT_EQ(lesson.editableSprings.size(), 2u);
+    EXPECT_EQ(lesson.editableSprings[0].spring, 1u);
+    EXPECT_EQ(lesson.editableSprings[1].spring, 3u);
+    lesson.removeSprings({true, true, false, false});
+    ASSERT_EQ(lesson.editableSprings.size(), 1u);
+    EXPECT_EQ(lesson.editableSprings[0].spring, 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{1}, SpringAttribute::Stiffness));
+
+    Spring before;
+    Spring after = before;
+    EXPECT_TRUE(changedAttributes(before, after).none());
+    after.restLength = 2;
+    after.anchorB = Vec2(1, 0);
+    const SpringAttributes changed = changedAttributes(before, after);
+    EXPECT_EQ(changed.count(), 2u);
+    EXPECT_TRUE(changed.test(static_cast<std::size_t>(SpringAttribute::RestLength)));
+    EXPECT_TRUE(changed.test(static_cast<std::size_t>(SpringAttribute::Anchors)));
+    EXPECT_FALSE(changesEnds(before, after));
+    after.bodyB = BodyId{1};
+    EXPECT_TRUE(changesEnds(before, after));
 }
 
 } // namespace

@@ -106,6 +106,7 @@ private slots:
     void lessonExampleOpensWithItsPanelAndLocks();
     void editLiftsTheLocksAndAddsAQuestionThatIsSaved();
     void editUnlocksABodyForStudentsAndIsUndoable();
+    void editUnlocksOneAttributeOfASpring();
 
 private:
     void open(model::World world);
@@ -393,4 +394,74 @@ void LessonTest::editUnlocksABodyForStudentsAndIsUndoable()
 }
 
 QTEST_MAIN(LessonTest)
+// A spring lab: the teacher lets students change the stiffness of the ball's spring and nothing
+// else of it. Before, the spring is locked whole; after, only its stiffness field takes typing,
+// the pane says so, and the edit is one undo step. Deleting the ball (as the teacher) takes the
+// spring and its entry with it; Undo brings both back.
+void LessonTest::editUnlocksOneAttributeOfASpring()
+{
+    model::World world = lockedWorld();
+    model::Spring spring;
+    spring.bodyA = model::BodyId{2};
+    spring.anchorB = Vec2(1.5, 2.5);
+    spring.stiffness = 80;
+    spring.damping = 0.5;
+    spring.restLength = 1.5;
+    world.springs.push_back(spring);
+    open(world);
+    PropertyPane* pane = m_window->propertyPane();
+    m_window->document().setSelection(Selection{{}, {0}, {}});
+    auto* stiffness = pane->findChild<QLineEdit*>(QStringLiteral("springStiffness"));
+    auto* damping = pane->findChild<QLineEdit*>(QStringLiteral("springDamping"));
+    QVERIFY(stiffness && damping);
+    QVERIFY(stiffness->isReadOnly());
+    QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson: this spring can't be changed."));
+
+    editAction()->trigger();
+    auto* tree = child<QTreeWidget>("lessonLocksTree");
+    QTreeWidgetItem* springItem = nullptr;
+    for (int i = 0; i < tree->topLevelItemCount(); ++i) {
+        if (tree->topLevelItem(i)->text(0) == QStringLiteral("Spring 0 (“ball” to the world)"))
+            springItem = tree->topLevelItem(i);
+    }
+    QVERIFY(springItem);
+    tree->expandItem(springItem);
+    QTreeWidgetItem* stiffnessItem = nullptr;
+    for (int i = 0; i < springItem->childCount(); ++i) {
+        if (springItem->child(i)->text(0) == QStringLiteral("stiffness"))
+            stiffnessItem = springItem->child(i);
+    }
+    QVERIFY(stiffnessItem);
+    tree->setFocus();
+    tree->setCurrentItem(stiffnessItem);
+    QTest::keyClick(tree, Qt::Key_Space);
+    QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::SpringAttribute::Stiffness));
+    QVERIFY(!m_window->runner().world().lesson->allows(std::size_t{0}, model::SpringAttribute::Damping));
+    QCOMPARE(springItem->checkState(0), Qt::PartiallyChecked);
+
+    editAction()->trigger();
+    QVERIFY(m_window->lesson().locksInForce());
+    m_window->document().setSelection(Selection{{}, {0}, {}});
+    QVERIFY(!stiffness->isReadOnly());
+    QVERIFY(damping->isReadOnly());
+    QVERIFY(pane->findChild<QLineEdit*>(QStringLiteral("springRestLength"))->isReadOnly());
+    QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson. You may change its stiffness."));
+    const int before = m_window->document().undoStack()->count();
+    typeInto(stiffness, QStringLiteral("200"));
+    QCOMPARE(m_window->runner().world().springs[0].stiffness, 200.0);
+    QCOMPARE(m_window->document().undoStack()->count(), before + 1);
+    typeInto(damping, QStringLiteral("3"));
+    QCOMPARE(m_window->runner().world().springs[0].damping, 0.5);
+
+    // The teacher deletes the ball: its spring goes, and so does the spring's entry.
+    editAction()->trigger();
+    m_window->document().setSelection(Selection{{2}, {}, {}});
+    m_window->deleteAction()->trigger();
+    QVERIFY(m_window->runner().world().springs.empty());
+    QVERIFY(m_window->runner().world().lesson->editableSprings.empty());
+    m_window->undoAction()->trigger();
+    QCOMPARE(m_window->runner().world().springs.size(), std::size_t{1});
+    QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::SpringAttribute::Stiffness));
+}
+
 #include "lesson_test.moc"
