@@ -218,18 +218,19 @@ Vec2 worldPointNear(SceneRandom& random, const Body& a)
     return p;
 }
 
-/// Softens a spring too stiff for the world's integrator at its step (ω·h past
-/// model::stableOmegaStep, ω with the bodies' turns at the anchors): such a spring is legal, but
-/// the program says it will blow up (model::sceneWarnings), so that outcome is expected, not a
-/// finding. Its ω is brought to kSpringStableShare of the limit, its damping ratio kept.
+/// Softens a spring too stiff, or too strongly damped, for the world's integrator at its step
+/// (model::longestStableSpringStep, with the bodies' turns at the anchors): such a spring is
+/// legal, but the program says it will blow up (model::sceneWarnings), so that outcome is
+/// expected, not a finding. Its stiffness is scaled by s² and its damping by s, which scales every
+/// rate of its motion by s and keeps its damping ratio, until its longest stable step is the
+/// scene's over kSpringStableShare.
 void keepSpringStable(const World& world, model::Spring& spring)
 {
-    const model::SpringMode mode = model::springMode(world, spring);
-    const std::optional<Scalar> limit = model::stableOmegaStep(world.settings.integrator, mode.zeta);
-    const Scalar omegaStep = mode.omega * world.settings.timeStep;
-    if (!limit || !(omegaStep > kSpringStableShare * *limit))
+    const Scalar h = model::springIntegratorStep(world);
+    const std::optional<Scalar> longest = model::longestStableSpringStep(world, spring);
+    if (!longest || !(h > kSpringStableShare * *longest))
         return;
-    const Scalar scale = kSpringStableShare * *limit / omegaStep;
+    const Scalar scale = kSpringStableShare * *longest / h;
     spring.stiffness *= scale * scale;
     spring.damping *= scale;
 }

@@ -35,8 +35,8 @@ inline constexpr Scalar kMaxSpin = 30.0;
 inline constexpr Scalar kMaxSpringOmega = 40.0;
 /// Largest damping ratio ζ of a spring drawn, c = 2ζ√(kμ).
 inline constexpr Scalar kMaxSpringDampingRatio = 0.5;
-/// A spring too stiff for its integrator at the scene's step is softened to this share of the
-/// largest stable ω·h (random_scene.cpp, keepSpringStable).
+/// A spring too stiff or too damped for its integrator at the scene's step is softened until the
+/// step is this share of its longest stable step (random_scene.cpp, keepSpringStable).
 inline constexpr Scalar kSpringStableShare = 0.9;
 /// Soft-mode settings drawn: grid density (ellipses per m²), grid stiffness (N/m) and damping
 /// (N·s/m). Kept to the lower densities so that a scene with a soft body stays cheap under the

@@ -3,7 +3,10 @@
 #include "model/constants.h"
 
 #include <algorithm>
+#include <Eigen/Dense>
+
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <iomanip>
 #include <numbers>
@@ -177,7 +180,9 @@ void checkMassRatios(const World& world, std::vector<SceneProblem>& out)
     }
 }
 
-const char* integratorWords(IntegratorKind integrator)
+/// What goes wrong past the integrator's limit, for a motion that oscillates or one that is only
+/// damped.
+std::string integratorWords(IntegratorKind integrator, bool oscillates)
 {
     switch (integrator) {
     case IntegratorKind::SemiImplicitEuler:
@@ -187,71 +192,69 @@ const char* integratorWords(IntegratorKind integrator)
     case IntegratorKind::Euler:
         break;
     }
+    if (!oscillates)
+        return "explicit Euler stays stable: the bodies on it will shake ever harder and fly apart";
     return "explicit Euler's energy doubles within one period (each step multiplies it by 1 − 2ζωh + ω²h², ζ the "
            "damping ratio)";
 }
 
-/// A spring too stiff for the step: the spring and the bodies it joins oscillate at ω = √(k/m),
-/// m the effective mass of the two ends along the spring (with the turn of each body about its
-/// centre, so that an anchor far off a body's centre counts), and an integrator that takes steps
-/// of h is unstable once ω·h passes its limit (stableOmegaStep). The integrators are not split
-/// for a spring: a lesson on integrators shows each one's error at the step the user chose.
+/// A spring too stiff, or too strongly damped, for the step: the spring and the bodies it joins
+/// move in modes (springMode), and an integrator that takes steps longer than
+/// longestStableStep() makes the fastest of them grow. A world with no joint, soft body or
+/// contact is not split for a spring: a lesson on integrators shows each one's error at the step
+/// the user chose.
 void checkSpringSteps(const World& world, std::vector<SceneProblem>& out)
 {
-    const Scalar h = world.settings.timeStep;
-    if (!(h > 0))
-        return;
     for (std::size_t i = 0; i < world.springs.size(); ++i) {
-        const Spring& spring = world.springs[i];
-        if (!(spring.stiffness > 0))
-            continue;
-        const SpringMode mode = springMode(world, spring);
-        const std::optional<Scalar> stable = stableOmegaStep(world.settings.integrator, mode.zeta);
-        const Scalar omega = mode.omega;
-        if (!stable || !(omega * h > *stable) || !std::isfinite(omega))
-            continue;
-        const Scalar limit = *stable;
-        out.push_back({"springs[" + std::to_string(i) + "]",
-                       "k = " + shown(spring.stiffness) + " N/m" +
-                           (mode.across ? ", stretched to " + shown(mode.length) + " m (rest length " +
-                                              shown(spring.restLength) + " m), pulls its ends across its line with " +
-                                              shown(mode.stiffness) + " N/m; on "
-                                        : " on ") +
-                           shown(1 / mode.inverseMass) + " kg (the ends' effective mass " +
-                           (mode.across ? "across" : "along") + " it) it oscillates at ω = √(k/m) = " + shown(omega) +
-                           " rad/s: ω·h = " + shown(omega * h) + " at the step of " +
-                           shown(h * kMillisecondsPerSecond) + " ms, above the " + shown(limit) + " at which " +
-                           integratorWords(world.settings.integrator) + "; make the step at most " +
-                           shown(limit / omega * kMillisecondsPerSecond) + " ms, or the spring softer"});
+        if (std::optional<SceneProblem> warning = springWarning(world, i))
+            out.push_back(std::move(*warning));
     }
 }
 
-} // namespace
-
-/// The largest ω·h at which `integrator` keeps an oscillator of angular frequency ω from growing,
-/// at a step h: semi-implicit Euler 2, RK4 2√2 (where its stability region crosses the imaginary
-/// axis), undamped. Explicit Euler grows wherever ω·h > 2ζ (ζ the damping ratio): each step
-/// multiplies the energy by |1 + hλ|² = 1 − 2ζωh + ω²h²; its limit here is the ω·h at which the
-/// energy doubles within one period of 2π/(ωh) steps, about 0.11 undamped. Nothing for explicit
-/// Euler with ζ ≥ 1, which does not oscillate.
-std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta)
+/// One step of `integrator` on ẍ = −ω²x − r·ẋ: the matrix that takes (x, v) to the next (x, v).
+/// Semi-implicit Euler as the engine does it: the force from the state at the start of the step,
+/// then the velocity, then the position with the new velocity.
+Eigen::Matrix2d stepMatrix(IntegratorKind integrator, Scalar omega, Scalar rate, Scalar h)
 {
+    Eigen::Matrix2d a;
+    a << 0, 1, -omega * omega, -rate;
+    const Eigen::Matrix2d ha = h * a;
+    const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
     switch (integrator) {
-    case IntegratorKind::SemiImplicitEuler:
-        return Scalar(2);
-    case IntegratorKind::Rk4:
-        return 2 * std::sqrt(Scalar(2));
     case IntegratorKind::Euler:
+        return identity + ha;
+    case IntegratorKind::SemiImplicitEuler: {
+        Eigen::Matrix2d m;
+        m << 1 - h * h * omega * omega, h * (1 - h * rate), -h * omega * omega, 1 - h * rate;
+        return m;
+    }
+    case IntegratorKind::Rk4:
         break;
     }
-    if (!(zeta < 1))
-        return std::nullopt;
+    const Eigen::Matrix2d ha2 = ha * ha;
+    return identity + ha + ha2 / 2 + ha2 * ha / 6 + ha2 * ha2 / 24;
+}
+
+/// The largest |λ| of a real 2×2 matrix.
+Scalar spectralRadius(const Eigen::Matrix2d& m)
+{
+    const Scalar half = 0.5 * m.trace();
+    const Scalar discriminant = half * half - m.determinant();
+    if (discriminant < 0)
+        return std::sqrt(m.determinant()); // a complex pair: |λ|² = λ·λ̄ = det
+    const Scalar root = std::sqrt(discriminant);
+    return std::max(std::abs(half + root), std::abs(half - root));
+}
+
+/// The ω·h at which explicit Euler's energy doubles within one period of an oscillator of damping
+/// ratio ζ < 1: each step multiplies the energy by |1 + hλ|² = 1 − 2ζωh + ω²h², a period is
+/// 2π/(ωh) steps. Bisection between where it starts to grow (2ζ) and one further, where for every
+/// ζ < 1 it grows by more than twice a period (by 2π·ln(1 + x)/x at least, with x ≥ 1).
+Scalar eulerDoublingOmegaStep(Scalar zeta)
+{
     const auto growthPerPeriod = [zeta](Scalar x) {
         return 2 * std::numbers::pi / x * std::log1p(x * x - 2 * zeta * x);
     };
-    // Bisection between where it starts to grow (2ζ) and one further, where for every ζ < 1 it
-    // grows by more than twice a period (by 2π·ln(1 + x)/x at least, with x ≥ 1): the growth
-    // rises with x between them.
     const Scalar doubling = std::log(Scalar(2));
     Scalar low = std::max(Scalar(2) * zeta, Scalar(1e-6));
     Scalar high = low + 1;
@@ -262,43 +265,204 @@ std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta)
     return low;
 }
 
+} // namespace
+
+std::optional<Scalar> longestStableStep(IntegratorKind integrator, Scalar omega, Scalar rate)
+{
+    if (!(omega > 0) && !(rate > 0))
+        return std::nullopt;
+    if (!std::isfinite(omega) || !std::isfinite(rate))
+        return Scalar(0);
+    if (integrator == IntegratorKind::Euler && omega > 0 && rate < 2 * omega)
+        return eulerDoublingOmegaStep(rate / (2 * omega)) / omega;
+    // The first step, in units of the motion's own time 1/max(ω, r), at which one step grows the
+    // state: scanned in small steps (each integrator's region is found within the first few), then
+    // bisected.
+    const Scalar scale = std::max(omega, rate);
+    const auto grows = [&](Scalar s) {
+        return spectralRadius(stepMatrix(integrator, omega, rate, s / scale)) > 1 + 1e-12;
+    };
+    constexpr Scalar kScanStep = 0.01;
+    constexpr Scalar kScanEnd = 20;
+    Scalar low = 0;
+    Scalar high = 0;
+    for (Scalar s = kScanStep; s <= kScanEnd; s += kScanStep) {
+        if (grows(s)) {
+            high = s;
+            break;
+        }
+        low = s;
+    }
+    if (!(high > 0))
+        return std::nullopt;
+    for (int i = 0; i < 50; ++i) {
+        const Scalar s = 0.5 * (low + high);
+        (grows(s) ? high : low) = s;
+    }
+    return low / scale;
+}
+
+std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta)
+{
+    return longestStableStep(integrator, 1, 2 * zeta);
+}
+
 SpringMode springMode(const World& world, const Spring& spring)
 {
-    const Body& a = world.body(spring.bodyA);
-    const Body* b = spring.bodyB ? &world.body(*spring.bodyB) : nullptr;
-    const Vec2 endA = a.worldPoint(spring.anchorA);
-    const Vec2 endB = b ? b->worldPoint(spring.anchorB) : spring.anchorB;
-    const Vec2 armA = endA - a.state.position;
-    const Vec2 armB = b ? Vec2(endB - b->state.position) : Vec2::Zero();
-    // Along the spring it pulls with k. Stretched past its rest length, its tension T also pulls
-    // its ends back onto its line when they move across it, with a stiffness T/L = k·(1 − L₀/L):
-    // a body whose anchor is far off its centre along the spring swings about it fastest across.
-    // A spring of zero length pulls whichever way its ends part, and each turn is counted with the
-    // whole arm.
-    SpringMode mode;
-    const Vec2 along = endB - endA;
-    mode.length = along.norm();
-    const auto inverseMassAcross = [&](const Vec2& direction) {
-        const auto turn = [&](const Vec2& arm) {
-            if (!(mode.length > 0))
-                return arm.squaredNorm();
-            const Scalar lever = arm.x() * direction.y() - arm.y() * direction.x();
-            return lever * lever;
-        };
-        return a.invMass + turn(armA) * a.invInertia + (b ? b->invMass + turn(armB) * b->invInertia : Scalar(0));
+    // The generalised coordinates are x, y and θ of each dynamic body the spring joins; J takes
+    // their velocities to the rate of change of d = end B − end A.
+    const auto dynamic = [&](std::optional<BodyId> id) -> const Body* {
+        if (!id || id->index >= world.bodies.size())
+            return nullptr;
+        const Body& body = world.body(*id);
+        return body.fixed || !(body.invMass > 0) ? nullptr : &body;
     };
-    const Vec2 u = mode.length > 0 ? Vec2(along / mode.length) : Vec2(1, 0);
-    const Scalar axialInverse = inverseMassAcross(u);
-    const Scalar acrossStiffness =
-        mode.length > spring.restLength ? spring.stiffness * (1 - spring.restLength / mode.length) : Scalar(0);
-    const Scalar acrossInverse = inverseMassAcross(Vec2(-u.y(), u.x()));
-    mode.across = acrossStiffness * acrossInverse > spring.stiffness * axialInverse;
-    mode.stiffness = mode.across ? acrossStiffness : spring.stiffness;
-    mode.inverseMass = mode.across ? acrossInverse : axialInverse;
-    mode.omega = std::sqrt(mode.stiffness * mode.inverseMass);
-    // The dashpot acts along the spring: c/(2mω) there, and nothing across it.
-    mode.zeta = !mode.across && mode.omega > 0 ? spring.damping * axialInverse / (2 * mode.omega) : Scalar(0);
+    const Body* a = dynamic(spring.bodyA);
+    const Body* b = dynamic(spring.bodyB);
+    const auto endOf = [&](std::optional<BodyId> id, const Vec2& anchor) -> Vec2 {
+        if (!id)
+            return anchor;
+        if (id->index >= world.bodies.size())
+            return Vec2::Zero();
+        return world.body(*id).worldPoint(anchor);
+    };
+    const Vec2 endA = endOf(spring.bodyA, spring.anchorA);
+    const Vec2 endB = endOf(spring.bodyB, spring.anchorB);
+    const int n = 3 * ((a ? 1 : 0) + (b ? 1 : 0));
+    SpringMode mode;
+    if (n == 0)
+        return mode;
+    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(2, n);
+    Eigen::VectorXd rootInverseMass(n);
+    std::vector<std::pair<int, Scalar>> turnTerms; // (column of θ, T·(u·arm) with its sign)
+    const Vec2 along = endB - endA;
+    const Scalar length = along.norm();
+    const Vec2 u = length > 0 ? Vec2(along / length) : Vec2::Zero();
+    const Scalar tension = length > 0 ? spring.stiffness * (length - spring.restLength) : Scalar(0);
+    int column = 0;
+    const auto addBody = [&](const Body& body, const Vec2& end, Scalar sign) {
+        const Vec2 arm = end - body.state.position;
+        jacobian(0, column) = sign;
+        jacobian(1, column + 1) = sign;
+        jacobian(0, column + 2) = -sign * arm.y(); // d(end)/dθ = the arm turned a quarter turn
+        jacobian(1, column + 2) = sign * arm.x();
+        rootInverseMass(column) = std::sqrt(body.invMass);
+        rootInverseMass(column + 1) = std::sqrt(body.invMass);
+        rootInverseMass(column + 2) = std::sqrt(body.invInertia);
+        // The end's second derivative in θ is −arm: the tension's pull along u stiffens a turn by
+        // T·(u·arm) at end B's side and the opposite at end A's (an anchor on the far side tips).
+        turnTerms.emplace_back(column + 2, -sign * tension * u.dot(arm));
+        column += 3;
+    };
+    if (a)
+        addBody(*a, endA, -1);
+    if (b)
+        addBody(*b, endB, 1);
+    // The energy's Hessian in d: k along the spring, T/L across it (zero length: k every way); the
+    // dashpot acts along it.
+    Eigen::Matrix2d hessian = spring.stiffness * Eigen::Matrix2d::Identity();
+    Eigen::Matrix2d dashpot = Eigen::Matrix2d::Identity();
+    if (length > 0) {
+        const Eigen::Matrix2d alongU = u * u.transpose();
+        hessian = spring.stiffness * alongU + tension / length * (Eigen::Matrix2d::Identity() - alongU);
+        dashpot = alongU;
+    }
+    Eigen::MatrixXd stiffness = jacobian.transpose() * hessian * jacobian;
+    for (const auto& [at, term] : turnTerms)
+        stiffness(at, at) += term;
+    const Eigen::MatrixXd damping = spring.damping * (jacobian.transpose() * dashpot * jacobian);
+    const auto scaled = [&](const Eigen::MatrixXd& m) {
+        return Eigen::MatrixXd(rootInverseMass.asDiagonal() * m * rootInverseMass.asDiagonal());
+    };
+    const Eigen::MatrixXd massStiffness = scaled(stiffness);
+    const Eigen::MatrixXd massDamping = scaled(damping);
+    if (!massStiffness.allFinite() || !massDamping.allFinite()) {
+        mode.omega = std::numeric_limits<Scalar>::infinity();
+        return mode;
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(massStiffness);
+    const Eigen::Index fastest = n - 1; // eigenvalues in increasing order
+    const Scalar omegaSquared = modes.eigenvalues()(fastest);
+    if (omegaSquared > 0) {
+        mode.omega = std::sqrt(omegaSquared);
+        const Eigen::VectorXd shape = modes.eigenvectors().col(fastest);
+        mode.rate = std::max(Scalar(0), shape.dot(massDamping * shape));
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> damped(massDamping, Eigen::EigenvaluesOnly);
+    mode.dampingRate = std::max(Scalar(0), damped.eigenvalues()(n - 1));
     return mode;
+}
+
+Scalar springIntegratorStep(const World& world)
+{
+    // A world with joints or soft bodies is always split; one with contacts only while they last,
+    // so its full step is the one judged.
+    const Scalar h = world.settings.timeStep;
+    return world.joints.empty() && world.softBodies.empty() ? h : solverStep(h);
+}
+
+namespace {
+
+/// The longest stable steps of a spring's fastest mode and of its dashpot alone, infinite for no
+/// limit (plain numbers: GCC's flow analysis takes optionals read under a condition for
+/// uninitialised).
+struct SpringLimits {
+    Scalar swinging = std::numeric_limits<Scalar>::infinity();
+    Scalar damped = std::numeric_limits<Scalar>::infinity();
+};
+
+SpringLimits springLimits(IntegratorKind integrator, const SpringMode& mode)
+{
+    constexpr Scalar kNoLimit = std::numeric_limits<Scalar>::infinity();
+    SpringLimits limits;
+    if (mode.omega > 0)
+        limits.swinging = longestStableStep(integrator, mode.omega, mode.rate).value_or(kNoLimit);
+    if (mode.dampingRate > 0)
+        limits.damped = longestStableStep(integrator, 0, mode.dampingRate).value_or(kNoLimit);
+    return limits;
+}
+
+} // namespace
+
+std::optional<Scalar> longestStableSpringStep(const World& world, const Spring& spring)
+{
+    const SpringLimits limits = springLimits(world.settings.integrator, springMode(world, spring));
+    const Scalar longest = std::min(limits.swinging, limits.damped);
+    return std::isinf(longest) ? std::nullopt : std::optional<Scalar>(longest);
+}
+
+std::optional<SceneProblem> springWarning(const World& world, std::size_t index)
+{
+    if (index >= world.springs.size())
+        return std::nullopt;
+    const Spring& spring = world.springs[index];
+    const Scalar h = springIntegratorStep(world);
+    if (!(h > 0) || (!(spring.stiffness > 0) && !(spring.damping > 0)))
+        return std::nullopt;
+    const IntegratorKind integrator = world.settings.integrator;
+    const SpringMode mode = springMode(world, spring);
+    const SpringLimits limits = springLimits(integrator, mode);
+    const std::string path = "springs[" + std::to_string(index) + "]";
+    const std::string step = shown(h * kMillisecondsPerSecond) + " ms";
+    if (h > limits.swinging && limits.swinging <= limits.damped) {
+        const bool oscillates = mode.rate < 2 * mode.omega;
+        return SceneProblem{path, "k = " + shown(spring.stiffness) + " N/m swings the bodies on it at ω = " +
+                                      shown(mode.omega) + " rad/s (its fastest motion, the bodies' turns included; "
+                                      "damping ratio " + shown(mode.rate / (2 * mode.omega)) + "): ω·h = " +
+                                      shown(mode.omega * h) + " at the integrators' step of " + step + ", past the " +
+                                      shown(mode.omega * limits.swinging) + " at which " +
+                                      integratorWords(integrator, oscillates) + "; make the step at most " +
+                                      shown(limits.swinging * kMillisecondsPerSecond) + " ms, or the spring softer"};
+    }
+    if (h > limits.damped) {
+        return SceneProblem{path, "c = " + shown(spring.damping) + " N·s/m slows the bodies on it at " +
+                                      shown(mode.dampingRate) + " /s: at the integrators' step of " + step +
+                                      " that is " + shown(mode.dampingRate * h) + " a step, past the " +
+                                      shown(mode.dampingRate * limits.damped) + " at which " +
+                                      integratorWords(integrator, false) + "; make the step at most " +
+                                      shown(limits.damped * kMillisecondsPerSecond) + " ms, or the damping smaller"};
+    }
+    return std::nullopt;
 }
 
 std::vector<SceneProblem> sceneWarnings(const World& world)

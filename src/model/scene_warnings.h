@@ -21,31 +21,47 @@ namespace impetus::model {
 ///   into substeps of at most kMaxSolverStep);
 /// - two dynamic bodies whose masses differ more than kMaxContactMassRatio times and that are
 ///   joined by a spring or joint, or touch at load time (their bounding circles overlap);
-/// - a spring so stiff for the bodies it joins that the world's integrator is unstable at the
-///   time step: ω·h above 2 (semi-implicit Euler) or 2√2 (RK4), with ω = √(k/m) and m the ends'
-///   effective mass along the spring, turns included; for explicit Euler, above the ω·h at which
-///   the energy doubles within one period (about 0.11).
+/// - a spring so stiff, or so strongly damped, for the bodies it joins that the world's
+///   integrator makes its fastest motion grow at the step it takes (the time step, or its
+///   substep of at most kMaxSolverStep in a world with joints or soft bodies): longestStableStep
+///   of springMode.
 std::vector<SceneProblem> sceneWarnings(const World& world);
 
-/// The fastest oscillation a spring drives in the bodies it joins, at their present poses.
+/// How a spring moves the bodies it joins, at their present poses: its fastest mode (the largest
+/// ω of K·q = ω²·M·q over the x, y and θ of each dynamic body, with K the Hessian of the spring's
+/// energy: k along it, its tension's T/L across it, and T·(u·arm) on each body's turn) and that
+/// mode's damping, and the fastest rate at which its dashpot alone slows them.
 struct SpringMode {
-    Scalar omega = 0; ///< ω = √(k/m), rad/s
-    Scalar zeta = 0; ///< damping ratio c/(2mω) of the mode (0 across the spring, where no dashpot acts)
-    Scalar stiffness = 0; ///< k along the spring, or k·(1 − L₀/L) across it, N/m
-    Scalar inverseMass = 0; ///< 1/m, the ends' effective inverse mass in that direction, turns included, 1/kg
-    Scalar length = 0; ///< the spring's present length L, m
-    bool across = false; ///< true when the mode across the stretched spring is the faster one
+    Scalar omega = 0; ///< ω of the fastest mode, rad/s (0 when nothing swings, e.g. k = 0)
+    Scalar rate = 0; ///< that mode's damping rate 2ζω, 1/s
+    Scalar dampingRate = 0; ///< the largest rate of the dashpot alone, c/m along the spring, 1/s
 };
 
-/// The spring's fastest mode: along it with k, or across it with the tension's k·(1 − L₀/L)
-/// when stretched, each body's turn about its centre counted at its anchor's lever arm.
+/// The modes of `spring` in `world` (SpringMode); all zero when it joins no dynamic body.
 SpringMode springMode(const World& world, const Spring& spring);
 
-/// The largest ω·h at which `integrator` keeps an oscillator of angular frequency ω and damping
-/// ratio ζ from growing at a step h: 2 for semi-implicit Euler and 2√2 for RK4 (undamped); for
-/// explicit Euler, which grows wherever ω·h > 2ζ, the ω·h at which the energy doubles within one
-/// period (about 0.11 undamped), and nothing for ζ ≥ 1 (no oscillation).
+/// The longest step at which `integrator` keeps the motion ẍ = −ω²x − r·ẋ from growing: where
+/// one step's matrix has a spectral radius above 1 (2/ω undamped for semi-implicit Euler, 2√2/ω
+/// for RK4, less for both with damping; 2/r for a dashpot alone under either Euler). Explicit
+/// Euler grows on every oscillating motion: its limit there (r < 2ω) is the step at which the
+/// energy doubles within one period, about 0.11/ω undamped. nullopt when nothing moves (ω = r = 0)
+/// or every step holds.
+std::optional<Scalar> longestStableStep(IntegratorKind integrator, Scalar omega, Scalar rate);
+
+/// longestStableStep of an oscillator of ω = 1 and damping ratio ζ: the largest stable ω·h.
 std::optional<Scalar> stableOmegaStep(IntegratorKind integrator, Scalar zeta);
+
+/// The step the integrators take spring forces with in `world`: its time step, or the substep of
+/// at most kMaxSolverStep that a world with joints or soft bodies is always split into.
+Scalar springIntegratorStep(const World& world);
+
+/// The longest step at which `world`'s integrator keeps the motions of `spring` from growing (the
+/// shorter of its fastest mode's and its dashpot's), or nullopt when every step holds.
+std::optional<Scalar> longestStableSpringStep(const World& world, const Spring& spring);
+
+/// The warning for spring `index` of `world` when springIntegratorStep() is longer than
+/// longestStableSpringStep() (path "springs[index]"), or nothing.
+std::optional<SceneProblem> springWarning(const World& world, std::size_t index);
 
 /// A run's starting energy, to judge its growth against (issue 17, F2).
 struct EnergyBaseline {

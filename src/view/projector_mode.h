@@ -68,7 +68,7 @@ private:
     QFont m_normalStatusFont; ///< the status bar's font before projector mode
     QPalette m_normalPalette; ///< the window's palette before projector mode
     bool m_wasFullScreen = false; ///< whether the window was full screen before projector mode
-    double m_readoutScale = 1; ///< the status bar's font, × m_normalStatusFont
+    double m_readoutScale = 1; ///< the status bar's font, × the window's normal font (m_normalFont)
     bool m_fitQueued = false; ///< a fitReadouts() is posted and not yet run
     /// The status bar watched while projector mode is on (the window's, which may go first as the
     /// window is destroyed: never asked of the window then).

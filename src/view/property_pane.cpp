@@ -1062,13 +1062,8 @@ void PropertyPane::load(const model::World& world)
         m_spring = world.springs[static_cast<std::size_t>(spring)];
         m_endNameA = nameOf(m_spring.bodyA);
         m_endNameB = nameOf(m_spring.bodyB);
-        QStringList lines;
-        const std::string path = "springs[" + std::to_string(spring) + "]";
-        for (const model::SceneProblem& warning : model::sceneWarnings(world)) {
-            if (warning.path == path)
-                lines << tr("Warning: %1").arg(QString::fromStdString(warning.reason));
-        }
-        m_springWarningText = lines.join(QLatin1Char('\n'));
+        const std::optional<model::SceneProblem> warning = model::springWarning(world, static_cast<std::size_t>(spring));
+        m_springWarningText = warning ? tr("Warning: %1").arg(QString::fromStdString(warning->reason)) : QString();
     } else if (const int joint = firstValid(m_selection.joints, world.joints.size()); joint >= 0) {
         m_page = Page::Joint;
         m_index = joint;

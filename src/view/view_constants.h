@@ -300,7 +300,8 @@ inline constexpr double kTracedPointRingPx = 4.0;
 /// A click within this distance of a traced point on the Trace Point tool stops tracing it, px.
 inline constexpr double kTracedPointPickPx = 8.0;
 
-/// Graphs: the most samples one graph keeps (1 h at the default step); the oldest go first.
+/// Graphs: the samples one graph keeps at least (1 h at the default step); the oldest go first,
+/// an eighth of this at a time (kGraphTrimShare).
 inline constexpr std::size_t kMaxGraphSamples = 864000;
 /// A graph drops its oldest samples once it holds this share of kMaxGraphSamples more, all at once
 /// (7.5 min of samples at the default step): dropping the few of each frame from the front of an
