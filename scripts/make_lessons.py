@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Writes the three lesson scenes in resources/examples/ (lesson-*.json).
+"""Writes the four lesson scenes in resources/examples/ (lesson-*.json).
 
 A lesson is a scene with a `lesson` block (docs/scene-format.md, "Lessons"): what students may
 change, instructions and questions with numeric answers. The answers are computed here from the
-textbook formulas, with the scene's own numbers; tests/scenes/lessons_test.cpp checks each one
+textbook formulas, with the scene's own numbers; tests/scenes/examples_test.cpp checks each one
 against the engine as well. Run it from the repository root:
 
     scripts/make_lessons.py            # rewrites resources/examples/lesson-*.json
@@ -38,9 +38,10 @@ def question(prompt, answer, unit, tolerance):
     return {"prompt": prompt, "answer": round(answer, 3), "unit": unit, "tolerance": tolerance}
 
 
-def lesson(title, instructions, editable=(), editable_world=(), questions=()):
+def lesson(title, instructions, editable=(), editable_world=(), questions=(), editable_springs=()):
     return {"title": title, "instructions": "\n".join(instructions), "editable": list(editable),
-            "editableWorld": list(editable_world), "questions": list(questions)}
+            "editableWorld": list(editable_world), "editableSprings": list(editable_springs),
+            "questions": list(questions)}
 
 
 # ---- Friction on an incline -------------------------------------------------------------------
@@ -203,7 +204,54 @@ def pendulum_length():
     write("lesson-pendulum-length.json", {**scene(world("rk4"), bodies, joints=joints), "lesson": text})
 
 
+# ---- Period of a mass on a spring against its stiffness -----------------------------------------
+
+def spring_period():
+    """A 1 kg block on a spring of 40 N/m from a wall, on a frictionless track (no gravity), pulled
+    out 0.2 m: T = 2π√(m/k) = 0.993 s. Students may change the stiffness only: four times k halves
+    T, and k = 4π²m/T² gives 2 s."""
+    m = 1.0
+    k = 40.0
+    wall_face = -2.0
+    rest = 1.8
+    half = 0.2
+    block_x = wall_face + rest + 0.2 + half
+    bodies = [
+        fixed("wall", box(0.2, 1.2), (wall_face - 0.1, 0.0), STRUCTURE_COLOR),
+        body("block", box(2 * half, 2 * half), (block_x, 0.0), PALETTE[4], mass=m),
+    ]
+    springs = [{"bodyA": "block", "anchorA": vec(-half, 0), "bodyB": "wall", "anchorB": vec(0.1, 0),
+                "stiffness": k, "damping": 0, "restLength": rest}]
+
+    def period(stiffness):
+        return 2 * math.pi * math.sqrt(m / stiffness)
+
+    text = lesson(
+        "A mass on a spring: period against stiffness",
+        [
+            "A 1 kg block on a frictionless track (there is no gravity here) hangs on a spring from "
+            "the wall. The spring is pulled out 0.2 m and let go.",
+            "",
+            "Measure the period: select the block, open **View › New Graph**, choose **x**, and read "
+            "the time between two crests (drag a box around them to zoom), or run 10 swings and divide.",
+            "",
+            "You may change the spring's **stiffness** k (select the spring to see it). Everything "
+            "else is locked by the lesson. Theory: T = 2π√(m/k).",
+        ],
+        editable_springs=[{"spring": 0, "attributes": ["stiffness"]}],
+        questions=[
+            question("What is the period with k = 40 N/m?", period(k), "s", 0.01),
+            question("Set k to 160 N/m. What is the period now?", period(4 * k), "s", 0.01),
+            question("By what factor did the period change when k became four times larger?",
+                     period(4 * k) / period(k), "", 0.02),
+            question("Which stiffness gives a period of 2 s?", 4 * math.pi ** 2 * m / 2.0 ** 2, "N/m", 0.2),
+        ])
+    write("lesson-spring-period.json",
+          {**scene(world("rk4", gravity=(0, 0)), bodies, springs=springs), "lesson": text})
+
+
 if __name__ == "__main__":
     incline_friction()
     cart_crash()
     pendulum_length()
+    spring_period()

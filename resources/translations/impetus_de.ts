@@ -653,6 +653,10 @@
         <source>Mass on a spring</source>
         <translation>Masse an einer Feder</translation>
     </message>
+    <message>
+        <source>Lesson: spring period and stiffness</source>
+        <translation>Lektion: Periode und Federkonstante einer Feder</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::GraphPanel</name>

@@ -653,6 +653,10 @@
         <source>Mass on a spring</source>
         <translation>Masa en un muelle</translation>
     </message>
+    <message>
+        <source>Lesson: spring period and stiffness</source>
+        <translation>Lección: periodo y constante de un muelle</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::GraphPanel</name>

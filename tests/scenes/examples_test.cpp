@@ -680,5 +680,42 @@ TEST(PendulumLesson, StoredPeriodsMatchTheEngineAndTheLargeAmplitudeFormula)
                         testing::pendulumPeriod(longest.length, kMoonGravity, longest.amplitude));
 }
 
+// The spring lab: students may change the spring's stiffness and nothing else. Each stored answer
+// holds both the engine's period (from the block's upward crossings of its rest point) and
+// T = 2π√(m/k), at the k each question asks for.
+TEST(SpringLesson, StoredPeriodsMatchTheEngineAndTwoPiRootMOverK)
+{
+    const model::World start = loadExample("lesson-spring-period.json");
+    const model::Lesson& lesson = lessonOf(start);
+    ASSERT_EQ(lesson.questions.size(), 4u);
+    ASSERT_EQ(start.springs.size(), 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{0}, model::SpringAttribute::Stiffness));
+    EXPECT_FALSE(lesson.allows(std::size_t{0}, model::SpringAttribute::RestLength));
+    EXPECT_TRUE(lesson.editableBodies.empty());
+    const std::size_t block = indexOf(start, "block");
+    const Scalar mass = start.bodies[block].mass;
+    const Vec2 wallEnd = start.bodies[indexOf(start, "wall")].worldPoint(start.springs[0].anchorB);
+    // Where the block rests: the spring at its rest length.
+    const Scalar rest = wallEnd.x() + start.springs[0].restLength - start.springs[0].anchorA.x();
+    const auto period = [&](Scalar stiffness) {
+        model::World world = start;
+        world.springs[0].stiffness = stiffness;
+        controller::Simulation simulation;
+        const Scalar formula = 2 * std::numbers::pi * std::sqrt(mass / stiffness);
+        const Scalar measured = periodOfUpwardCrossings(simulation, world, 4.5 * formula,
+                                                        [&](const model::World& w) { return w.bodies[block].state.position.x() - rest; });
+        return std::pair{measured, formula};
+    };
+    const auto [t40, formula40] = period(40);
+    const auto [t160, formula160] = period(160);
+    expectAnswerMatches(lesson, 0, t40, formula40);
+    expectAnswerMatches(lesson, 1, t160, formula160);
+    expectAnswerMatches(lesson, 2, t160 / t40, 0.5);
+    // Question 4: the stiffness the student finds for 2 s, checked by running it.
+    const Scalar forTwoSeconds = lesson.questions[3].answer;
+    EXPECT_NEAR(period(forTwoSeconds).first, 2.0, 0.002);
+    expectAnswerMatches(lesson, 3, forTwoSeconds, 4 * std::numbers::pi * std::numbers::pi * mass / 4);
+}
+
 } // namespace
 } // namespace impetus
