@@ -229,8 +229,8 @@ def spring_period():
     text = lesson(
         "A mass on a spring: period against stiffness",
         [
-            "A 1 kg block on a frictionless track (there is no gravity here) hangs on a spring from "
-            "the wall. The spring is pulled out 0.2 m and let go.",
+            "A 1 kg block on a frictionless track (there is no gravity here) is tied to the wall by a "
+            "spring. The spring is pulled out 0.2 m and let go.",
             "",
             "Measure the period: select the block, open **View › New Graph**, choose **x**, and read "
             "the time between two crests (drag a box around them to zoom), or run 10 swings and divide.",

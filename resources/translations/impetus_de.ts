@@ -1198,6 +1198,10 @@
         <source>You may change %1. Everything else is locked by the lesson.</source>
         <translation>Änderbar: %1. Alles andere ist von der Lektion gesperrt.</translation>
     </message>
+    <message>
+        <source>spring %1: %2</source>
+        <translation>Feder %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonSession</name>

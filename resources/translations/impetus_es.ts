@@ -1198,6 +1198,10 @@
         <source>You may change %1. Everything else is locked by the lesson.</source>
         <translation>Puedes cambiar %1. Todo lo demás está bloqueado por la lección.</translation>
     </message>
+    <message>
+        <source>spring %1: %2</source>
+        <translation>muelle %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonSession</name>

@@ -226,8 +226,11 @@ private:
                 } else if (index->is_number_unsigned() ? index->get<std::uint64_t>() >= springs
                                                        : index->get<std::int64_t>() < 0 ||
                                                              static_cast<std::uint64_t>(index->get<std::int64_t>()) >= springs) {
-                    report(indexPath, "no spring " + index->dump() + " (the scene has " + std::to_string(springs) +
-                                          (springs == 1 ? " spring, index 0)" : " springs, indices from 0)"));
+                    report(indexPath, "no spring " + index->dump() +
+                                          (springs == 0   ? " (the scene has no springs)"
+                                           : springs == 1 ? " (the scene has 1 spring, index 0)"
+                                                          : " (the scene has " + std::to_string(springs) +
+                                                                " springs, indices 0 to " + std::to_string(springs - 1) + ")"));
                 } else {
                     spring = static_cast<std::size_t>(index->get<std::uint64_t>());
                     if (!seenAt[spring].empty()) {

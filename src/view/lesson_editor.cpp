@@ -185,12 +185,14 @@ void LessonEditor::refreshLocks()
         springLabels.push_back(tr("Spring %1 (%2 to %3)").arg(i).arg(endName(spring.bodyA), endName(spring.bodyB)));
         names.push_back(springLabels.back().toStdString());
     }
+    // The bodies' count ends the list too: a body named like a spring's label must not pass for it.
+    names.push_back(std::to_string(world.bodies.size()));
     if (names == m_lockNames && lesson == m_lockLesson)
         return;
     const QSignalBlocker blocker(m_locks);
     // A new set of bodies or springs gets a new tree; otherwise the boxes are ticked in place,
     // because this may run inside itemChanged of one of them.
-    if (names != m_lockNames || m_locks->topLevelItemCount() != static_cast<int>(names.size()) + 1) {
+    if (names != m_lockNames || m_locks->topLevelItemCount() != static_cast<int>(names.size())) {
         m_locks->clear();
         auto* worldItem = new QTreeWidgetItem(m_locks, {tr("World settings")});
         worldItem->setData(0, kIndexRole, kWorldItem);

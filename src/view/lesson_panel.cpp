@@ -213,6 +213,10 @@ void LessonPanel::updateLocks()
             parts << tr("“%1”: %2").arg(QString::fromStdString(world.body(entry.body).name),
                                        attributeList(entry.attributes));
     }
+    for (const model::EditableSpring& entry : lesson->editableSprings) {
+        if (entry.spring < world.springs.size())
+            parts << tr("spring %1: %2").arg(entry.spring).arg(springAttributeList(entry.attributes));
+    }
     if (lesson->editableWorld.any())
         parts << tr("world: %1").arg(attributeList(lesson->editableWorld));
     m_locks->setText(parts.isEmpty()

@@ -1149,7 +1149,7 @@ bool PropertyPane::locked(const QWidget* field) const
     }
     case Page::Spring: {
         const std::optional<model::SpringAttribute> attribute = springAttributeOf(field->objectName());
-        return !attribute || m_lesson->springLock(m_index, *attribute);
+        return attribute ? m_lesson->springLock(m_index, *attribute).has_value() : m_lesson->locksInForce();
     }
     case Page::Joint:
         break;

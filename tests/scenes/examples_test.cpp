@@ -494,7 +494,7 @@ TEST(SpringChainExample, ChainSettlesAtTheStaticStretches)
 
 // ---- Lessons: each stored answer against the engine and against the textbook -------------------
 //
-// The three lessons (docs/examples.md, "Lessons") store the answers to their questions. Each one is
+// The four lessons (docs/examples.md, "Lessons") store the answers to their questions. Each one is
 // measured here in the engine as a student would measure it in the app, and worked out from the
 // textbook formula with the scene's own numbers; the question must accept both.
 

@@ -242,6 +242,17 @@ std::string badLessonName(const ::testing::TestParamInfo<BadLesson>& param)
 
 INSTANTIATE_TEST_SUITE_P(Bad, LessonRefusal, ::testing::ValuesIn(kBadLessons), badLessonName);
 
+TEST(LessonRefusal, ASceneWithoutSpringsSaysSo)
+{
+    std::string text = sceneWithLesson(R"({"title":"t","editableSprings":[{"spring":0,"attributes":["damping"]}]})");
+    const std::string springs = R"("springs":[{"bodyA":"ball","anchorA":[0,0],"anchorB":[0,2],"stiffness":50}])";
+    text.replace(text.find(springs), springs.size(), R"("springs":[])");
+    const SceneLoadResult result = parseScene(text);
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(hasProblem(result.problems, "lesson.editableSprings[0].spring", "no spring 0 (the scene has no springs)"))
+        << describe(result.problems);
+}
+
 TEST(LessonRefusal, ReportsEveryProblemAtOnce)
 {
     const SceneLoadResult result = parseScene(sceneWithLesson(

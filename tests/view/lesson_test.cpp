@@ -393,7 +393,6 @@ void LessonTest::editUnlocksABodyForStudentsAndIsUndoable()
     QVERIFY(pane->findChild<QLineEdit*>(QStringLiteral("velocityX"))->isReadOnly());
 }
 
-QTEST_MAIN(LessonTest)
 // A spring lab: the teacher lets students change the stiffness of the ball's spring and nothing
 // else of it. Before, the spring is locked whole; after, only its stiffness field takes typing,
 // the pane says so, and the edit is one undo step. Deleting the ball (as the teacher) takes the
@@ -446,6 +445,9 @@ void LessonTest::editUnlocksOneAttributeOfASpring()
     QVERIFY(damping->isReadOnly());
     QVERIFY(pane->findChild<QLineEdit*>(QStringLiteral("springRestLength"))->isReadOnly());
     QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson. You may change its stiffness."));
+    // The lesson panel says so too, beside the ball's friction.
+    QCOMPARE(child<QLabel>("lessonLocks")->text(),
+             QStringLiteral("You may change “ball”: friction; spring 0: stiffness. Everything else is locked by the lesson."));
     const int before = m_window->document().undoStack()->count();
     typeInto(stiffness, QStringLiteral("200"));
     QCOMPARE(m_window->runner().world().springs[0].stiffness, 200.0);
@@ -464,4 +466,5 @@ void LessonTest::editUnlocksOneAttributeOfASpring()
     QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::SpringAttribute::Stiffness));
 }
 
+QTEST_MAIN(LessonTest)
 #include "lesson_test.moc"
