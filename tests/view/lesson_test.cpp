@@ -107,6 +107,7 @@ private slots:
     void editLiftsTheLocksAndAddsAQuestionThatIsSaved();
     void editUnlocksABodyForStudentsAndIsUndoable();
     void editUnlocksOneAttributeOfASpring();
+    void lockTreeTellsABodyNamedLikeASpringFromTheSpring();
 
 private:
     void open(model::World world);
@@ -464,6 +465,42 @@ void LessonTest::editUnlocksOneAttributeOfASpring()
     m_window->undoAction()->trigger();
     QCOMPARE(m_window->runner().world().springs.size(), std::size_t{1});
     QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::SpringAttribute::Stiffness));
+}
+
+// A body may be called anything, even what the lock tree calls a spring. A scene with bodies
+// "ball" and "Spring 0 (“ball” to the world)" and one with a ball on a spring give the tree the
+// same labels; the second must still list a spring (stiffness, …), not a body (name, size, …).
+void LessonTest::lockTreeTellsABodyNamedLikeASpringFromTheSpring()
+{
+    const auto childTexts = [this](int top) {
+        QStringList texts;
+        QTreeWidgetItem* item = child<QTreeWidget>("lessonLocksTree")->topLevelItem(top);
+        for (int i = 0; item && i < item->childCount(); ++i)
+            texts << item->child(i)->text(0);
+        return texts;
+    };
+    model::World named;
+    named.settings.gravity = Vec2::Zero();
+    named.bodies.push_back(test::makeBody("ball", model::Circle{0.3}, Vec2(0, 0)));
+    named.bodies.push_back(test::makeBody("Spring 0 (“ball” to the world)", model::Circle{0.3}, Vec2(2, 0)));
+    open(named);
+    editAction()->trigger();
+    QCOMPARE(child<QTreeWidget>("lessonLocksTree")->topLevelItem(2)->text(0), QStringLiteral("“Spring 0 (“ball” to the world)”"));
+    QVERIFY(childTexts(2).contains(QStringLiteral("size")));
+
+    model::World sprung;
+    sprung.settings.gravity = Vec2::Zero();
+    sprung.bodies.push_back(test::makeBody("ball", model::Circle{0.3}, Vec2(0, 0)));
+    model::Spring spring;
+    spring.bodyA = model::BodyId{0};
+    spring.anchorB = Vec2(0, 1);
+    sprung.springs.push_back(spring);
+    m_window->document().undoStack()->setClean();
+    m_window->setScene(sprung, QStringLiteral("sprung"));
+    editAction()->trigger();
+    QCOMPARE(child<QTreeWidget>("lessonLocksTree")->topLevelItem(2)->text(0), QStringLiteral("Spring 0 (“ball” to the world)"));
+    QVERIFY(childTexts(2).contains(QStringLiteral("stiffness")));
+    QVERIFY(!childTexts(2).contains(QStringLiteral("size")));
 }
 
 QTEST_MAIN(LessonTest)
