@@ -2689,6 +2689,14 @@
         <source>Warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
+    <message>
+        <source>Use a time step of %1 ms</source>
+        <translation>Zeitschritt von %1 ms verwenden</translation>
+    </message>
+    <message>
+        <source>Use the time step that holds this spring</source>
+        <translation>Den Zeitschritt verwenden, den diese Feder verträgt</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::SatExplainer</name>

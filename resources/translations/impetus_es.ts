@@ -2689,6 +2689,14 @@
         <source>Warning: %1</source>
         <translation>Aviso: %1</translation>
     </message>
+    <message>
+        <source>Use a time step of %1 ms</source>
+        <translation>Usar un paso de tiempo de %1 ms</translation>
+    </message>
+    <message>
+        <source>Use the time step that holds this spring</source>
+        <translation>Usar el paso de tiempo que soporta este muelle</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::SatExplainer</name>

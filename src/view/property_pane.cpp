@@ -623,9 +623,23 @@ void PropertyPane::buildSpringPage()
     addNumber(Page::Spring, form, QStringLiteral("springRestLength"), tr("Rest length"), tr("m"),
               Bound::NonNegative, [this] { return m_spring.restLength; },
               editSpring([](model::Spring& s, double v) { s.restLength = v; }, tr("Change rest length")));
-    // A spring too stiff for the step, said where its stiffness is typed (the world page lists it too).
+    // A spring too stiff for the step, said where its stiffness is typed (the world page lists it
+    // too), with the step that holds it a click away.
     m_springWarnings = makeMessageLabel(QStringLiteral("springWarnings"), tr("Warnings"));
     form->addRow(m_springWarnings);
+    m_useStableStep = new QPushButton(this);
+    m_useStableStep->setObjectName(QStringLiteral("springUseStableStep"));
+    m_useStableStep->setAccessibleName(tr("Use the time step that holds this spring"));
+    m_useStableStep->hide();
+    form->addRow(m_useStableStep);
+    connect(m_useStableStep, &QPushButton::clicked, this, [this] {
+        if (!m_stableStep)
+            return;
+        model::WorldSettings settings = m_settings;
+        settings.timeStep = *m_stableStep;
+        if (const std::optional<QString> refused = commitWorldSettings(settings, tr("Change time step")))
+            refuse(*refused);
+    });
 }
 
 void PropertyPane::buildJointPage()
@@ -1064,6 +1078,18 @@ void PropertyPane::load(const model::World& world)
         m_endNameB = nameOf(m_spring.bodyB);
         const std::optional<model::SceneProblem> warning = model::springWarning(world, static_cast<std::size_t>(spring));
         m_springWarningText = warning ? tr("Warning: %1").arg(QString::fromStdString(warning->reason)) : QString();
+        // The step offered: a little under the longest that holds (so that rounding cannot land
+        // on the limit), to three significant digits, down.
+        m_stableStep.reset();
+        if (warning) {
+            if (const std::optional<double> longest = model::longestStableSpringStep(world, m_spring)) {
+                const double wanted = constants::kStableStepShare * *longest;
+                const double unit = std::pow(10.0, std::floor(std::log10(wanted)) - 2);
+                const double step = std::floor(wanted / unit) * unit;
+                if (step >= constants::kMinEditableTimeStep)
+                    m_stableStep = step;
+            }
+        }
     } else if (const int joint = firstValid(m_selection.joints, world.joints.size()); joint >= 0) {
         m_page = Page::Joint;
         m_index = joint;
@@ -1300,6 +1326,12 @@ void PropertyPane::displaySpring()
     m_springBodyB->setText(m_endNameB);
     m_springWarnings->setText(m_springWarningText);
     m_springWarnings->setVisible(!m_springWarningText.isEmpty());
+    m_useStableStep->setVisible(m_stableStep.has_value());
+    if (m_stableStep) {
+        m_useStableStep->setText(tr("Use a time step of %1 ms").arg(formatNumber(*m_stableStep * 1000)));
+        // Locked with the time step by a lesson that does not let students change it.
+        m_useStableStep->setEnabled(!m_lesson || !m_lesson->worldLock(model::WorldAttribute::TimeStep));
+    }
     QFormLayout* form = m_forms[static_cast<std::size_t>(Page::Spring)];
     if (auto* label = qobject_cast<QLabel*>(form->labelForField(m_springAnchorBRow)))
         label->setText(m_spring.bodyB ? tr("Anchor B (body frame)") : tr("Anchor B (world point)"));

@@ -230,6 +230,8 @@ private:
     std::function<bool(const std::string&, VectorKind)> m_bodyVectorsShown;
     QLabel* m_worldWarnings = nullptr; ///< world page: why the settings may give wrong results
     QLabel* m_springWarnings = nullptr; ///< spring page: why this spring may give wrong results
+    QPushButton* m_useStableStep = nullptr; ///< spring page: sets the time step that holds the spring
+    std::optional<double> m_stableStep; ///< the time step it sets, s; none when the spring holds
     NumberField* m_softStiffness = nullptr;
     NumberField* m_softDamping = nullptr; ///< c of each grid spring, N·s/m
     NumberField* m_softDampingRatio = nullptr; ///< ζ, dimensionless

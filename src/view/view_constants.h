@@ -57,6 +57,9 @@ inline constexpr double kBehindTolerance = 0.05;
 /// resolved too coarsely to mean anything. A scene file may hold any positive step.
 inline constexpr double kMinEditableTimeStep = 1e-5;
 inline constexpr double kMaxEditableTimeStep = 0.1;
+/// A spring's page offers a time step this share of the longest its integrator holds the spring
+/// at (model::longestStableSpringStep), to three significant digits, down.
+inline constexpr double kStableStepShare = 0.95;
 
 /// Space left around the bodies when a scene is framed, as a fraction of the larger side of their
 /// bounding box, on each side. 8 % keeps outlines off the window edge without wasting the canvas.

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -176,6 +177,21 @@ void SettingWarningsTest::springTooStiffForTheStepIsWarnedOnItsPage()
 
     typeAndEnter(stiffness, QStringLiteral("1000"));
     QTRY_VERIFY(!warnings->isVisible());
+
+    // Back at 10⁶ N/m, the page offers the step that holds it, a little under the limit: one
+    // click sets it (one undo step), and the warning goes.
+    typeAndEnter(stiffness, QStringLiteral("1000000"));
+    QTRY_VERIFY(warnings->isVisible());
+    auto* useStep = pane->findChild<QPushButton*>(QStringLiteral("springUseStableStep"));
+    QVERIFY(useStep && useStep->isVisible() && useStep->isEnabled());
+    QCOMPARE(useStep->text(), QStringLiteral("Use a time step of 2.68 ms"));
+    QTest::mouseClick(useStep, Qt::LeftButton);
+    QCOMPARE(window.runner().world().settings.timeStep, 2.68e-3);
+    QTRY_VERIFY(!warnings->isVisible());
+    QVERIFY(!useStep->isVisible());
+    window.undoAction()->trigger();
+    QCOMPARE(window.runner().world().settings.timeStep, 1.0 / 240);
+    QTRY_VERIFY(warnings->isVisible());
 }
 
 #include "setting_warnings_test.moc"
