@@ -23,6 +23,24 @@ Body box(const std::string& name, Vec2 position, Scalar mass, bool fixed = false
     return body;
 }
 
+/// In zero gravity under `integrator` at `timeStep`: a 1 kg box of 1 m at the origin, on a spring
+/// of `stiffness` from its centre to the world point (0, 1), at its rest length of 1 m.
+World boxOnASpring(IntegratorKind integrator, Scalar timeStep, Scalar stiffness)
+{
+    World world;
+    world.settings.gravity = Vec2::Zero();
+    world.settings.integrator = integrator;
+    world.settings.timeStep = timeStep;
+    world.bodies = {box("box", Vec2(0, 0), 1)};
+    Spring spring;
+    spring.bodyA = BodyId{0};
+    spring.anchorB = Vec2(0, 1);
+    spring.restLength = 1;
+    spring.stiffness = stiffness;
+    world.springs = {spring};
+    return world;
+}
+
 std::string joined(const std::vector<SceneProblem>& warnings)
 {
     std::string text;
@@ -112,17 +130,8 @@ TEST(SceneWarnings, ManyPairsAreCountedNotListed)
 // Euler is stable up to ω·h = 2, so up to k = 480² N/m.
 TEST(SceneWarnings, ASpringTooStiffForTheStepNamesItsFrequencyAndTheLongestStep)
 {
-    World world;
-    world.settings.gravity = Vec2::Zero();
-    world.settings.integrator = IntegratorKind::SemiImplicitEuler;
-    world.settings.timeStep = 1.0 / 240;
-    world.bodies = {box("box", Vec2(0, 0), 1)};
-    Spring spring;
-    spring.bodyA = BodyId{0};
-    spring.anchorB = Vec2(0, 1);
-    spring.restLength = 1;
-    spring.stiffness = 0.98 * 480 * 480;
-    world.springs = {spring};
+    World world = boxOnASpring(IntegratorKind::SemiImplicitEuler, 1.0 / 240, 0.98 * 480 * 480);
+    const Spring spring = world.springs[0];
     EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
     world.springs[0].stiffness = 1.02 * 480 * 480;
     std::vector<SceneProblem> warnings = sceneWarnings(world);
@@ -171,17 +180,10 @@ TEST(SceneWarnings, ASpringTooStiffForTheStepNamesItsFrequencyAndTheLongestStep)
 // spring's energy really has at the present poses.
 TEST(SceneWarnings, AStretchedSpringsTensionCountsWithTheBodysTurn)
 {
-    World world;
-    world.settings.gravity = Vec2::Zero();
-    world.settings.integrator = IntegratorKind::SemiImplicitEuler;
-    world.settings.timeStep = 1.0 / 240;
-    world.bodies = {box("box", Vec2(0, 0), 1)};
-    Spring spring;
-    spring.bodyA = BodyId{0};
-    spring.anchorA = Vec2(0, 0.5);
-    spring.anchorB = Vec2(0, 2.5); // 2 m from the anchor
-    spring.restLength = 1; // stretched to twice its length: T = k, T/L = k/2
-    world.springs = {spring};
+    World world = boxOnASpring(IntegratorKind::SemiImplicitEuler, 1.0 / 240, 0);
+    world.springs[0].anchorA = Vec2(0, 0.5);
+    world.springs[0].anchorB = Vec2(0, 2.5); // 2 m from the anchor
+    world.springs[0].restLength = 1; // stretched to twice its length: T = k, T/L = k/2
     // Along the spring the box moves as a mass of 1 kg: ω² = k. Across it, the anchor swings with
     // the stiffness T/L = k/2 on 1/m = 1 + 0.5²·6 = 2.5, and the tension stiffens the turn by
     // T·(u·arm) = k·0.5 on I = 1/6: the fastest of the coupled motion is faster than √k.
@@ -204,17 +206,9 @@ TEST(SceneWarnings, AStretchedSpringsTensionCountsWithTheBodysTurn)
 // at most 1/240 s, so a spring that 1/60 s would not hold is held.
 TEST(SceneWarnings, ASpringIsJudgedAtTheSubstepOfAWorldWithJoints)
 {
-    World world;
-    world.settings.gravity = Vec2::Zero();
-    world.settings.integrator = IntegratorKind::Rk4;
-    world.settings.timeStep = 1.0 / 60;
-    world.bodies = {box("box", Vec2(0, 0), 1), box("other", Vec2(3, 0), 1)};
-    Spring spring;
-    spring.bodyA = BodyId{0};
-    spring.anchorB = Vec2(0, 1);
-    spring.restLength = 1;
-    spring.stiffness = 400 * 400; // ω = 400: ω·h = 6.7 at 1/60 s, 1.7 at 1/240 s
-    world.springs = {spring};
+    // ω = 400: ω·h = 6.7 at 1/60 s, 1.7 at 1/240 s
+    World world = boxOnASpring(IntegratorKind::Rk4, 1.0 / 60, 400 * 400);
+    world.bodies.push_back(box("other", Vec2(3, 0), 1));
     ASSERT_EQ(sceneWarnings(world).size(), 1u) << joined(sceneWarnings(world));
     EXPECT_NE(sceneWarnings(world)[0].reason.find("integrators' step of 16.7 ms"), std::string::npos);
     Joint pin;
