@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 #include <cmath>
 #include <iterator>
 #include <vector>
@@ -303,11 +304,20 @@ void CanvasInstruments::followBodies()
     std::unordered_map<std::string, std::uint32_t> indexOf;
     for (std::uint32_t i = 0; i < world.bodies.size(); ++i)
         indexOf.emplace(world.bodies[i].name, i);
+    // A rename: the same number of bodies, and at some index a name that is gone where one that
+    // was not there before stands. That body keeps its paths (an edit of its name in the pane is
+    // no reason to lose them).
+    const bool sameCount = m_bodyNames.size() == world.bodies.size();
+    const std::unordered_set<std::string> oldNames(m_bodyNames.begin(), m_bodyNames.end());
     const auto newIndex = [&](std::size_t oldIndex) -> std::optional<std::uint32_t> {
         if (oldIndex >= m_bodyNames.size())
             return std::nullopt;
         const auto it = indexOf.find(m_bodyNames[oldIndex]);
-        return it == indexOf.end() ? std::nullopt : std::optional<std::uint32_t>(it->second);
+        if (it != indexOf.end())
+            return it->second;
+        if (sameCount && !oldNames.contains(world.bodies[oldIndex].name))
+            return static_cast<std::uint32_t>(oldIndex);
+        return std::nullopt;
     };
     if (m_trails) {
         std::vector<std::deque<TrailPoint>> moved(world.bodies.size());

@@ -30,6 +30,7 @@
 #include <QFile>
 #include <QImage>
 #include <QLabel>
+#include <QLineEdit>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QTemporaryDir>
@@ -104,6 +105,7 @@ private slots:
     void accelerationForceAndMomentumArrowsPointAlongTheirVectors();
     void tracePointDrawsACycloid();
     void pathsStayWithTheirBodiesWhenABodyIsDeletedOrBack();
+    void pathsStayWithABodyRenamedInThePane();
     void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
@@ -969,6 +971,62 @@ void InstrumentsTest::pathsStayWithTheirBodiesWhenABodyIsDeletedOrBack()
     QCOMPARE(instruments.trail(1).size(), std::size_t{37});
     QCOMPARE(instruments.tracedPoints().front().trail.size(), std::size_t{37});
     QCOMPARE(instruments.trail(0).size(), std::size_t{13});
+}
+
+void InstrumentsTest::pathsStayWithABodyRenamedInThePane()
+{
+    model::World world;
+    world.settings.gravity = impetus::Vec2::Zero();
+    model::Body block = test::makeBody("block", model::Box{0.6, 0.6}, impetus::Vec2(-2, 0));
+    world.bodies.push_back(block);
+    model::Body wheel = test::makeBody("wheel", model::Circle{0.5}, impetus::Vec2(2, 0));
+    wheel.state.velocity = impetus::Vec2(0, 1);
+    wheel.state.angularVelocity = 2;
+    world.bodies.push_back(wheel);
+    MainWindow window;
+    window.setScene(world, QStringLiteral("wheel"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    CanvasInstruments& instruments = canvas.instruments();
+    window.trailsAction()->trigger();
+    QTest::keyClick(viewport, Qt::Key_X);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(2, -0.4)).toPoint());
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    window.runner().stepBy(24);
+    QCOMPARE(instruments.trail(1).size(), std::size_t{25});
+    const QPointF tracedStart = instruments.tracedPoints().front().trail.front().position;
+
+    // Select the wheel where it is now and rename it in the pane.
+    QTest::keyClick(viewport, Qt::Key_S);
+    const impetus::Vec2 wheelNow = window.runner().world().bodies[1].state.position;
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(wheelNow.x(), wheelNow.y())).toPoint());
+    QCOMPARE(window.document().selection(), (impetus::view::Selection{{1}, {}, {}}));
+    auto* name = window.propertyPane()->findChild<QLineEdit*>(QStringLiteral("name"));
+    QVERIFY(name);
+    name->setFocus();
+    QTest::keyClick(name, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(name, QStringLiteral("disc"));
+    QTest::keyClick(name, Qt::Key_Return);
+    QCOMPARE(window.runner().world().bodies[1].name, std::string("disc"));
+
+    // Its trail and traced point are still there, from the same start, and grow on; the block's
+    // trail is untouched.
+    QCOMPARE(instruments.trail(1).size(), std::size_t{25});
+    QCOMPARE(instruments.trail(1).front().position, QPointF(2, 0));
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+    QCOMPARE(instruments.tracedPoints().front().body, 1u);
+    QCOMPARE(instruments.tracedPoints().front().trail.front().position, tracedStart);
+    window.runner().stepBy(12);
+    QCOMPARE(instruments.trail(1).size(), std::size_t{37});
+    QCOMPARE(instruments.tracedPoints().front().trail.size(), std::size_t{37});
+    QCOMPARE(instruments.trail(0).size(), std::size_t{37});
+
+    // Undo gives the wheel its name back, and the paths stay with it again.
+    QTest::keyClick(&canvas, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.runner().world().bodies[1].name, std::string("wheel"));
+    QCOMPARE(instruments.trail(1).size(), std::size_t{37});
+    QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
 }
 
 void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()
