@@ -38,10 +38,11 @@ def question(prompt, answer, unit, tolerance):
     return {"prompt": prompt, "answer": round(answer, 3), "unit": unit, "tolerance": tolerance}
 
 
-def lesson(title, instructions, editable=(), editable_world=(), questions=(), editable_springs=()):
+def lesson(title, instructions, editable=(), editable_world=(), questions=(), editable_springs=(),
+           editable_joints=()):
     return {"title": title, "instructions": "\n".join(instructions), "editable": list(editable),
             "editableWorld": list(editable_world), "editableSprings": list(editable_springs),
-            "questions": list(questions)}
+            "editableJoints": list(editable_joints), "questions": list(questions)}
 
 
 # ---- Friction on an incline -------------------------------------------------------------------

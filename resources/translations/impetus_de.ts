@@ -1103,6 +1103,18 @@
         <source>Change what students may change of spring %1</source>
         <translation>Ändern, was an Feder %1 änderbar ist</translation>
     </message>
+    <message>
+        <source>Pin %1 (%2 to %3)</source>
+        <translation>Gelenk %1 (zwischen %2 und %3)</translation>
+    </message>
+    <message>
+        <source>Rod %1 (%2 to %3)</source>
+        <translation>Stange %1 (zwischen %2 und %3)</translation>
+    </message>
+    <message>
+        <source>Change what students may change of joint %1</source>
+        <translation>Ändern, was an Gelenk %1 änderbar ist</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonPanel</name>
@@ -1202,6 +1214,10 @@
         <source>spring %1: %2</source>
         <translation>Feder %1: %2</translation>
     </message>
+    <message>
+        <source>joint %1: %2</source>
+        <translation>Gelenk %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonSession</name>
@@ -1246,10 +1262,6 @@
         <translation>Von der Lektion gesperrt. Änderbar: %1.</translation>
     </message>
     <message>
-        <source>Locked by the lesson: joints can&apos;t be changed.</source>
-        <translation>Von der Lektion gesperrt: Gelenke lassen sich nicht ändern.</translation>
-    </message>
-    <message>
         <source>Locked by the lesson: the %1 of spring %2 can&apos;t be changed.</source>
         <translation>Von der Lektion gesperrt: Feder %2 (%1) lässt sich nicht ändern.</translation>
     </message>
@@ -1260,6 +1272,18 @@
     <message>
         <source>Locked by the lesson: this spring can&apos;t be changed.</source>
         <translation>Von der Lektion gesperrt: diese Feder lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 of joint %2 can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: Gelenk %2 (%1) lässt sich nicht ändern.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: joint %1 can&apos;t be changed to another type or to other bodies.</source>
+        <translation>Von der Lektion gesperrt: Gelenk %1 lässt sich nicht in eine andere Art ändern oder an andere Körper hängen.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this joint can&apos;t be changed.</source>
+        <translation>Von der Lektion gesperrt: dieses Gelenk lässt sich nicht ändern.</translation>
     </message>
 </context>
 <context>

@@ -1103,6 +1103,18 @@
         <source>Change what students may change of spring %1</source>
         <translation>Cambiar qué pueden cambiar los alumnos del muelle %1</translation>
     </message>
+    <message>
+        <source>Pin %1 (%2 to %3)</source>
+        <translation>Pasador %1 (entre %2 y %3)</translation>
+    </message>
+    <message>
+        <source>Rod %1 (%2 to %3)</source>
+        <translation>Varilla %1 (entre %2 y %3)</translation>
+    </message>
+    <message>
+        <source>Change what students may change of joint %1</source>
+        <translation>Cambiar qué pueden cambiar los alumnos de la unión %1</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonPanel</name>
@@ -1202,6 +1214,10 @@
         <source>spring %1: %2</source>
         <translation>muelle %1: %2</translation>
     </message>
+    <message>
+        <source>joint %1: %2</source>
+        <translation>unión %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonSession</name>
@@ -1246,10 +1262,6 @@
         <translation>Bloqueado por la lección. Puedes cambiar: %1.</translation>
     </message>
     <message>
-        <source>Locked by the lesson: joints can&apos;t be changed.</source>
-        <translation>Bloqueado por la lección: no se pueden cambiar las uniones.</translation>
-    </message>
-    <message>
         <source>Locked by the lesson: the %1 of spring %2 can&apos;t be changed.</source>
         <translation>Bloqueado por la lección: no se puede cambiar el muelle %2 (%1).</translation>
     </message>
@@ -1260,6 +1272,18 @@
     <message>
         <source>Locked by the lesson: this spring can&apos;t be changed.</source>
         <translation>Bloqueado por la lección: este muelle no se puede cambiar.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: the %1 of joint %2 can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: no se puede cambiar la unión %2 (%1).</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: joint %1 can&apos;t be changed to another type or to other bodies.</source>
+        <translation>Bloqueado por la lección: la unión %1 no se puede cambiar a otro tipo ni unir a otros cuerpos.</translation>
+    </message>
+    <message>
+        <source>Locked by the lesson: this joint can&apos;t be changed.</source>
+        <translation>Bloqueado por la lección: esta unión no se puede cambiar.</translation>
     </message>
 </context>
 <context>

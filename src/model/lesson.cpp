@@ -19,6 +19,7 @@ constexpr std::array<std::string_view, kWorldAttributeCount> kWorldAttributeName
 
 constexpr std::array<std::string_view, kSpringAttributeCount> kSpringAttributeNames = {"stiffness", "damping",
                                                                                        "restLength", "anchors"};
+constexpr std::array<std::string_view, kJointAttributeCount> kJointAttributeNames = {"anchors"};
 
 template <class Attribute, std::size_t N>
 std::optional<Attribute> fromName(std::string_view name, const std::array<std::string_view, N>& names)
@@ -49,6 +50,7 @@ void setEntry(std::vector<Entry>& entries, Key key, Attributes attributes, KeyOf
 /// An entry's index moved down by `below` places.
 void renumber(EditableBody& entry, std::size_t below) { entry.body.index -= static_cast<std::uint32_t>(below); }
 void renumber(EditableSpring& entry, std::size_t below) { entry.spring -= below; }
+void renumber(EditableJoint& entry, std::size_t below) { entry.joint -= below; }
 
 /// Drops the entries whose index `indexOf` is flagged in `removed` and renumbers the rest as
 /// the items that stay close up.
@@ -93,6 +95,16 @@ std::string_view attributeName(SpringAttribute attribute)
 std::optional<SpringAttribute> springAttributeFromName(std::string_view name)
 {
     return fromName<SpringAttribute>(name, kSpringAttributeNames);
+}
+
+std::string_view attributeName(JointAttribute attribute)
+{
+    return kJointAttributeNames[static_cast<std::size_t>(attribute)];
+}
+
+std::optional<JointAttribute> jointAttributeFromName(std::string_view name)
+{
+    return fromName<JointAttribute>(name, kJointAttributeNames);
 }
 
 bool LessonQuestion::accepts(Scalar value) const
@@ -145,6 +157,27 @@ void Lesson::removeSprings(const std::vector<bool>& removed)
     removeEntries(editableSprings, removed, [](const EditableSpring& entry) { return entry.spring; });
 }
 
+JointAttributes Lesson::editableJoint(std::size_t joint) const
+{
+    const auto it = std::ranges::find(editableJoints, joint, &EditableJoint::joint);
+    return it == editableJoints.end() ? JointAttributes() : it->attributes;
+}
+
+bool Lesson::allows(std::size_t joint, JointAttribute attribute) const
+{
+    return editableJoint(joint).test(static_cast<std::size_t>(attribute));
+}
+
+void Lesson::setEditableJoint(std::size_t joint, JointAttributes attributes)
+{
+    setEntry(editableJoints, joint, attributes, &EditableJoint::joint);
+}
+
+void Lesson::removeJoints(const std::vector<bool>& removed)
+{
+    removeEntries(editableJoints, removed, [](const EditableJoint& entry) { return entry.joint; });
+}
+
 BodyAttributes changedAttributes(const Body& before, const Body& after)
 {
     BodyAttributes changed;
@@ -191,6 +224,21 @@ SpringAttributes changedAttributes(const Spring& before, const Spring& after)
 bool changesEnds(const Spring& before, const Spring& after)
 {
     return before.bodyA != after.bodyA || before.bodyB != after.bodyB;
+}
+
+JointAttributes changedAttributes(const Joint& before, const Joint& after)
+{
+    JointAttributes changed;
+    changed.set(static_cast<std::size_t>(JointAttribute::Anchors), before.worldAnchor != after.worldAnchor ||
+                                                                       before.anchorA != after.anchorA ||
+                                                                       before.anchorB != after.anchorB ||
+                                                                       before.length != after.length);
+    return changed;
+}
+
+bool changesEnds(const Joint& before, const Joint& after)
+{
+    return before.type != after.type || before.bodyA != after.bodyA || before.bodyB != after.bodyB;
 }
 
 } // namespace impetus::model

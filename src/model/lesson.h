@@ -6,6 +6,7 @@
 /// answers that the app checks. The engine ignores it: it changes nothing in how the scene moves.
 
 #include "model/body.h"
+#include "model/joint.h"
 #include "model/scalar.h"
 #include "model/spring.h"
 
@@ -76,6 +77,17 @@ inline constexpr std::size_t kSpringAttributeCount = 4;
 inline constexpr std::array<SpringAttribute, kSpringAttributeCount> kSpringAttributes = {
     SpringAttribute::Stiffness, SpringAttribute::Damping, SpringAttribute::RestLength, SpringAttribute::Anchors};
 
+/// What of a joint a lesson may leave editable. A joint's type and the bodies it joins never are.
+enum class JointAttribute {
+    Anchors, ///< "anchors": a pin's hinge (`anchor`), or a rod's two ends (`anchorA`, `anchorB`)
+};
+
+/// The number of JointAttribute values.
+inline constexpr std::size_t kJointAttributeCount = 1;
+
+/// Every JointAttribute.
+inline constexpr std::array<JointAttribute, kJointAttributeCount> kJointAttributes = {JointAttribute::Anchors};
+
 /// A set of body attributes, indexed by BodyAttribute.
 using BodyAttributes = std::bitset<kBodyAttributeCount>;
 
@@ -84,6 +96,9 @@ using WorldAttributes = std::bitset<kWorldAttributeCount>;
 
 /// A set of spring attributes, indexed by SpringAttribute.
 using SpringAttributes = std::bitset<kSpringAttributeCount>;
+
+/// A set of joint attributes, indexed by JointAttribute.
+using JointAttributes = std::bitset<kJointAttributeCount>;
 
 /// The scene-file name of a body attribute ("friction", "angularVelocity", …).
 std::string_view attributeName(BodyAttribute attribute);
@@ -97,6 +112,10 @@ std::optional<WorldAttribute> worldAttributeFromName(std::string_view name);
 std::string_view attributeName(SpringAttribute attribute);
 /// Parses a spring attribute's scene-file name; nullopt when unknown.
 std::optional<SpringAttribute> springAttributeFromName(std::string_view name);
+/// The scene-file name of a joint attribute ("anchors").
+std::string_view attributeName(JointAttribute attribute);
+/// Parses a joint attribute's scene-file name; nullopt when unknown.
+std::optional<JointAttribute> jointAttributeFromName(std::string_view name);
 
 /// A body students may change, and which of its attributes.
 struct EditableBody {
@@ -110,6 +129,13 @@ struct EditableSpring {
     std::size_t spring = 0; ///< index into World::springs
     SpringAttributes attributes; ///< what of it students may change; never empty in a Lesson
     bool operator==(const EditableSpring&) const = default; ///< memberwise equality
+};
+
+/// A joint students may change, and which of its attributes.
+struct EditableJoint {
+    std::size_t joint = 0; ///< index into World::joints
+    JointAttributes attributes; ///< what of it students may change; never empty in a Lesson
+    bool operator==(const EditableJoint&) const = default; ///< memberwise equality
 };
 
 /// A question with a numeric answer: right when the student's value v satisfies
@@ -136,8 +162,11 @@ struct Lesson {
     std::vector<EditableBody> editableBodies;
     WorldAttributes editableWorld; ///< the world settings students may change
     /// The springs students may change, sorted by spring index, at most one entry per spring, none
-    /// with an empty attribute set. Joints, and springs not listed, are locked.
+    /// with an empty attribute set. Springs not listed are locked.
     std::vector<EditableSpring> editableSprings;
+    /// The joints students may change, sorted by joint index, at most one entry per joint, none
+    /// with an empty attribute set. Joints not listed are locked.
+    std::vector<EditableJoint> editableJoints;
     std::vector<LessonQuestion> questions; ///< in the order they are asked
     bool operator==(const Lesson&) const = default; ///< memberwise equality
 
@@ -166,6 +195,16 @@ struct Lesson {
     /// Follows a removal of springs, as removeBodies() does for bodies: `removed` has one flag per
     /// spring of the world before the removal.
     void removeSprings(const std::vector<bool>& removed);
+
+    /// The attributes of joint `joint` that students may change (empty: the joint is locked).
+    JointAttributes editableJoint(std::size_t joint) const;
+    /// True when students may change `attribute` of joint `joint`.
+    bool allows(std::size_t joint, JointAttribute attribute) const;
+    /// Makes `attributes` exactly what students may change of joint `joint`; an empty set locks
+    /// it. Keeps editableJoints sorted and free of empty entries.
+    void setEditableJoint(std::size_t joint, JointAttributes attributes);
+    /// Follows a removal of joints, as removeSprings() does for springs.
+    void removeJoints(const std::vector<bool>& removed);
 };
 
 /// The attributes in which `after` differs from `before`: what an edit of a body changes.
@@ -182,5 +221,14 @@ SpringAttributes changedAttributes(const Spring& before, const Spring& after);
 
 /// True when `after` joins other bodies than `before` (which no lesson leaves editable).
 bool changesEnds(const Spring& before, const Spring& after);
+
+/// The attributes in which joint `after` differs from `before`: its anchors, a pin's hinge and
+/// the anchors derived from it included. Its type, its bodies and the solver's impulse are not
+/// attributes (see changesEnds).
+JointAttributes changedAttributes(const Joint& before, const Joint& after);
+
+/// True when `after` is of another type than `before` or joins other bodies (which no lesson
+/// leaves editable).
+bool changesEnds(const Joint& before, const Joint& after);
 
 } // namespace impetus::model

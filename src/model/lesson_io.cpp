@@ -15,10 +15,12 @@ namespace {
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 6> kLessonKeys = {"title",         "instructions",    "editable",
-                                                         "editableWorld", "editableSprings", "questions"};
+constexpr std::array<std::string_view, 7> kLessonKeys = {"title",           "instructions",   "editable",
+                                                         "editableWorld",   "editableSprings", "editableJoints",
+                                                         "questions"};
 constexpr std::array<std::string_view, 2> kEditableKeys = {"body", "attributes"};
 constexpr std::array<std::string_view, 2> kEditableSpringKeys = {"spring", "attributes"};
+constexpr std::array<std::string_view, 2> kEditableJointKeys = {"joint", "attributes"};
 constexpr std::array<std::string_view, 4> kQuestionKeys = {"prompt", "answer", "unit", "tolerance"};
 
 /// Strings from the file quoted in a message are cut to this many bytes, so a stray long value
@@ -68,8 +70,18 @@ public:
             readEditable(*editable, path + ".editable", lesson);
         if (const Json* world = find(value, "editableWorld"))
             readEditableWorld(*world, path + ".editableWorld", lesson.editableWorld);
-        if (const Json* springs = find(value, "editableSprings"))
-            readEditableSprings(*springs, path + ".editableSprings", lesson);
+        if (const Json* springs = find(value, "editableSprings")) {
+            readEditableItems<SpringAttribute, kSpringAttributeCount>(
+                *springs, path + ".editableSprings", {"spring", m_world.springs.size(), kEditableSpringKeys},
+                springAttributeFromName, kSpringAttributes,
+                [&lesson](std::size_t spring, SpringAttributes attributes) { lesson.setEditableSpring(spring, attributes); });
+        }
+        if (const Json* joints = find(value, "editableJoints")) {
+            readEditableItems<JointAttribute, kJointAttributeCount>(
+                *joints, path + ".editableJoints", {"joint", m_world.joints.size(), kEditableJointKeys},
+                jointAttributeFromName, kJointAttributes,
+                [&lesson](std::size_t joint, JointAttributes attributes) { lesson.setEditableJoint(joint, attributes); });
+        }
         if (const Json* questions = find(value, "questions"))
             readQuestions(*questions, path + ".questions", lesson.questions);
         if (m_problems.size() != before)
@@ -205,52 +217,66 @@ private:
         }
     }
 
-    void readEditableSprings(const Json& value, const std::string& path, Lesson& lesson)
+    /// What an entry of editableSprings or editableJoints refers to: the key that holds its
+    /// index ("spring", "joint", also the noun of the messages), how many the scene has, and the
+    /// keys an entry may have.
+    struct IndexedItems {
+        std::string_view noun;
+        std::size_t count = 0;
+        std::span<const std::string_view> keys;
+    };
+
+    /// Reads a list of {noun: index, attributes: [...]} entries (editableSprings, editableJoints)
+    /// and hands each valid one to `set`.
+    template <class Attribute, std::size_t N, class FromName, class Set>
+    void readEditableItems(const Json& value, const std::string& path, const IndexedItems& items, FromName fromName,
+                           const std::array<Attribute, N>& all, Set set)
     {
         if (!isArray(value, path))
             return;
-        const std::size_t springs = m_world.springs.size();
-        std::vector<std::string> seenAt(springs);
+        const std::string noun(items.noun);
+        const std::size_t count = items.count;
+        std::vector<std::string> seenAt(count);
         for (std::size_t i = 0; i < value.size(); ++i) {
             const std::string entryPath = path + '[' + std::to_string(i) + ']';
             const Json& entry = value[i];
             if (!isObject(entry, entryPath))
                 continue;
-            checkKeys(entry, entryPath, kEditableSpringKeys);
-            std::size_t spring = 0;
+            checkKeys(entry, entryPath, items.keys);
+            std::size_t item = 0;
             bool known = false;
-            if (const Json* index = required(entry, "spring", entryPath)) {
-                const std::string indexPath = entryPath + ".spring";
+            if (const Json* index = required(entry, items.noun, entryPath)) {
+                const std::string indexPath = entryPath + '.' + noun;
                 if (!index->is_number_integer()) {
-                    report(indexPath, "expected the index of a spring (a whole number), got " + kindOf(*index));
-                } else if (index->is_number_unsigned() ? index->get<std::uint64_t>() >= springs
+                    report(indexPath, "expected the index of a " + noun + " (a whole number), got " + kindOf(*index));
+                } else if (index->is_number_unsigned() ? index->get<std::uint64_t>() >= count
                                                        : index->get<std::int64_t>() < 0 ||
-                                                             static_cast<std::uint64_t>(index->get<std::int64_t>()) >= springs) {
-                    report(indexPath, "no spring " + index->dump() +
-                                          (springs == 0   ? " (the scene has no springs)"
-                                           : springs == 1 ? " (the scene has 1 spring, index 0)"
-                                                          : " (the scene has " + std::to_string(springs) +
-                                                                " springs, indices 0 to " + std::to_string(springs - 1) + ")"));
+                                                             static_cast<std::uint64_t>(index->get<std::int64_t>()) >= count) {
+                    report(indexPath, "no " + noun + ' ' + index->dump() +
+                                          (count == 0   ? " (the scene has no " + noun + "s)"
+                                           : count == 1 ? " (the scene has 1 " + noun + ", index 0)"
+                                                        : " (the scene has " + std::to_string(count) + ' ' + noun +
+                                                              "s, indices 0 to " + std::to_string(count - 1) + ")"));
                 } else {
-                    spring = static_cast<std::size_t>(index->get<std::uint64_t>());
-                    if (!seenAt[spring].empty()) {
-                        report(indexPath, "spring " + std::to_string(spring) + " is listed twice (" + seenAt[spring] +
+                    item = static_cast<std::size_t>(index->get<std::uint64_t>());
+                    if (!seenAt[item].empty()) {
+                        report(indexPath, noun + ' ' + std::to_string(item) + " is listed twice (" + seenAt[item] +
                                               " already lists it)");
                     } else {
-                        seenAt[spring] = entryPath;
+                        seenAt[item] = entryPath;
                         known = true;
                     }
                 }
             }
-            SpringAttributes attributes;
+            std::bitset<N> attributes;
             if (const Json* list = required(entry, "attributes", entryPath)) {
-                attributes = readNames<SpringAttribute, kSpringAttributeCount>(
-                    *list, entryPath + ".attributes", springAttributeFromName, kSpringAttributes);
+                attributes = readNames<Attribute, N>(*list, entryPath + ".attributes", fromName, all);
                 if (list->is_array() && list->empty())
-                    report(entryPath + ".attributes", "must list at least one attribute (leave the spring out to lock it)");
+                    report(entryPath + ".attributes",
+                           "must list at least one attribute (leave the " + noun + " out to lock it)");
             }
             if (known && attributes.any())
-                lesson.setEditableSpring(spring, attributes);
+                set(item, attributes);
         }
     }
 
@@ -341,6 +367,24 @@ OrderedJson namesJson(const std::bitset<N>& set, const std::array<Attribute, N>&
     return names;
 }
 
+/// editableSprings or editableJoints as written: each entry as {key: index, attributes: [...]},
+/// those whose index is past the `count` items of the world left out.
+template <class Entry, class Attribute, std::size_t N>
+OrderedJson indexedJson(const std::vector<Entry>& entries, std::size_t count, const char* key,
+                        const std::array<Attribute, N>& all, std::size_t Entry::*index)
+{
+    OrderedJson out = OrderedJson::array();
+    for (const Entry& entry : entries) {
+        if (entry.*index >= count || entry.attributes.none())
+            continue;
+        OrderedJson item = OrderedJson::object();
+        item[key] = entry.*index;
+        item["attributes"] = namesJson(entry.attributes, all);
+        out.push_back(std::move(item));
+    }
+    return out;
+}
+
 } // namespace
 
 std::optional<Lesson> readLesson(const nlohmann::json& value, const std::string& path, const World& world,
@@ -365,16 +409,10 @@ nlohmann::ordered_json lessonJson(const Lesson& lesson, const World& world)
     }
     out["editable"] = std::move(editable);
     out["editableWorld"] = namesJson(lesson.editableWorld, kWorldAttributes);
-    OrderedJson springs = OrderedJson::array();
-    for (const EditableSpring& entry : lesson.editableSprings) {
-        if (entry.spring >= world.springs.size() || entry.attributes.none())
-            continue;
-        OrderedJson item = OrderedJson::object();
-        item["spring"] = entry.spring;
-        item["attributes"] = namesJson(entry.attributes, kSpringAttributes);
-        springs.push_back(std::move(item));
-    }
-    out["editableSprings"] = std::move(springs);
+    out["editableSprings"] = indexedJson(lesson.editableSprings, world.springs.size(), "spring", kSpringAttributes,
+                                         &EditableSpring::spring);
+    out["editableJoints"] =
+        indexedJson(lesson.editableJoints, world.joints.size(), "joint", kJointAttributes, &EditableJoint::joint);
     OrderedJson questions = OrderedJson::array();
     for (const LessonQuestion& question : lesson.questions) {
         OrderedJson item = OrderedJson::object();

@@ -23,6 +23,9 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <array>
+#include <bitset>
 #include <utility>
 
 namespace impetus::view {
@@ -47,9 +50,40 @@ constexpr int kIndexRole = Qt::UserRole;
 /// The lock tree's top-level item of the world settings.
 constexpr int kWorldItem = -1;
 
-/// The item data role that is true on a spring's top-level item (whose kIndexRole is then the
-/// spring's index) and on its attributes.
-constexpr int kSpringRole = Qt::UserRole + 1;
+/// The item data role that holds what a top-level item and its attributes are about (ItemKind);
+/// kIndexRole is then the index of the body, spring or joint.
+constexpr int kKindRole = Qt::UserRole + 1;
+
+/// What a lock tree item is about.
+enum class ItemKind { Body, World, Spring, Joint };
+
+/// The attributes ticked under a top-level item of the lock tree, as a bitset of N.
+template <std::size_t N>
+std::bitset<N> tickedAttributes(const QTreeWidgetItem* parent)
+{
+    std::bitset<N> attributes;
+    for (int i = 0; i < parent->childCount(); ++i)
+        attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),
+                       parent->child(i)->checkState(0) == Qt::Checked);
+    return attributes;
+}
+
+/// A top-level item of the lock tree for the `index`-th item of `kind`, with a box for each of
+/// `attributes`.
+template <class Attribute, std::size_t N>
+void addLockItem(QTreeWidget* tree, const QString& label, ItemKind kind, int index,
+                 const std::array<Attribute, N>& attributes)
+{
+    auto* item = new QTreeWidgetItem(tree, {label});
+    item->setData(0, kIndexRole, index);
+    item->setData(0, kKindRole, static_cast<int>(kind));
+    for (const Attribute attribute : attributes) {
+        auto* child = new QTreeWidgetItem(item, {attributeTitle(attribute)});
+        child->setData(0, kIndexRole, static_cast<int>(attribute));
+    }
+}
+
+ItemKind kindOf(const QTreeWidgetItem* item) { return static_cast<ItemKind>(item->data(0, kKindRole).toInt()); }
 
 Qt::CheckState checkState(bool on) { return on ? Qt::Checked : Qt::Unchecked; }
 
@@ -170,9 +204,9 @@ void LessonEditor::refreshLocks()
 {
     const model::World& world = m_session.document().world();
     const std::optional<model::Lesson>& lesson = m_session.lesson();
-    // The tree's items: every body by name, then every spring by its ends.
+    // The tree's items: every body by name, then every spring and every joint by its ends.
     std::vector<std::string> names;
-    names.reserve(world.bodies.size() + world.springs.size());
+    names.reserve(world.bodies.size() + world.springs.size() + world.joints.size() + 1);
     for (const model::Body& body : world.bodies)
         names.push_back(body.name);
     const auto endName = [&world](std::optional<model::BodyId> body) {
@@ -185,55 +219,56 @@ void LessonEditor::refreshLocks()
         springLabels.push_back(tr("Spring %1 (%2 to %3)").arg(i).arg(endName(spring.bodyA), endName(spring.bodyB)));
         names.push_back(springLabels.back().toStdString());
     }
-    // The bodies' count ends the list too: a body named like a spring's label must not pass for it.
-    names.push_back(std::to_string(world.bodies.size()));
+    std::vector<QString> jointLabels;
+    for (std::size_t i = 0; i < world.joints.size(); ++i) {
+        const model::Joint& joint = world.joints[i];
+        jointLabels.push_back(joint.type == model::JointType::Pin
+                                  ? tr("Pin %1 (%2 to %3)").arg(i).arg(endName(joint.bodyA), endName(joint.bodyB))
+                                  : tr("Rod %1 (%2 to %3)").arg(i).arg(endName(joint.bodyA), endName(joint.bodyB)));
+        names.push_back(jointLabels.back().toStdString());
+    }
+    // The counts end the list too: a body named like a spring's label must not pass for it.
+    names.push_back(std::to_string(world.bodies.size()) + ' ' + std::to_string(world.springs.size()));
     if (names == m_lockNames && lesson == m_lockLesson)
         return;
     const QSignalBlocker blocker(m_locks);
-    // A new set of bodies or springs gets a new tree; otherwise the boxes are ticked in place,
-    // because this may run inside itemChanged of one of them.
+    // A new set of bodies, springs or joints gets a new tree; otherwise the boxes are ticked in
+    // place, because this may run inside itemChanged of one of them.
     if (names != m_lockNames || m_locks->topLevelItemCount() != static_cast<int>(names.size())) {
         m_locks->clear();
-        auto* worldItem = new QTreeWidgetItem(m_locks, {tr("World settings")});
-        worldItem->setData(0, kIndexRole, kWorldItem);
-        for (const model::WorldAttribute attribute : model::kWorldAttributes) {
-            auto* child = new QTreeWidgetItem(worldItem, {attributeTitle(attribute)});
-            child->setData(0, kIndexRole, static_cast<int>(attribute));
-        }
+        addLockItem(m_locks, tr("World settings"), ItemKind::World, kWorldItem, model::kWorldAttributes);
         for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-            auto* bodyItem = new QTreeWidgetItem(m_locks, {QStringLiteral("“%1”").arg(QString::fromStdString(names[i]))});
-            bodyItem->setData(0, kIndexRole, static_cast<int>(i));
-            for (const model::BodyAttribute attribute : model::kBodyAttributes) {
-                auto* child = new QTreeWidgetItem(bodyItem, {attributeTitle(attribute)});
-                child->setData(0, kIndexRole, static_cast<int>(attribute));
-            }
+            addLockItem(m_locks, QStringLiteral("“%1”").arg(QString::fromStdString(names[i])), ItemKind::Body,
+                        static_cast<int>(i), model::kBodyAttributes);
         }
-        for (std::size_t i = 0; i < springLabels.size(); ++i) {
-            auto* springItem = new QTreeWidgetItem(m_locks, {springLabels[i]});
-            springItem->setData(0, kIndexRole, static_cast<int>(i));
-            springItem->setData(0, kSpringRole, true);
-            for (const model::SpringAttribute attribute : model::kSpringAttributes) {
-                auto* child = new QTreeWidgetItem(springItem, {attributeTitle(attribute)});
-                child->setData(0, kIndexRole, static_cast<int>(attribute));
-                child->setData(0, kSpringRole, true);
-            }
-        }
+        for (std::size_t i = 0; i < springLabels.size(); ++i)
+            addLockItem(m_locks, springLabels[i], ItemKind::Spring, static_cast<int>(i), model::kSpringAttributes);
+        for (std::size_t i = 0; i < jointLabels.size(); ++i)
+            addLockItem(m_locks, jointLabels[i], ItemKind::Joint, static_cast<int>(i), model::kJointAttributes);
     }
     for (int top = 0; top < m_locks->topLevelItemCount(); ++top) {
         QTreeWidgetItem* parent = m_locks->topLevelItem(top);
         const int index = parent->data(0, kIndexRole).toInt();
-        const bool spring = parent->data(0, kSpringRole).toBool();
+        const auto item = static_cast<std::size_t>(std::max(index, 0));
         for (int i = 0; i < parent->childCount(); ++i) {
             QTreeWidgetItem* child = parent->child(i);
             const auto bit = static_cast<std::size_t>(child->data(0, kIndexRole).toInt());
             bool on = false;
             if (lesson) {
-                if (spring)
-                    on = lesson->editableSpring(static_cast<std::size_t>(index)).test(bit);
-                else if (index == kWorldItem)
+                switch (kindOf(parent)) {
+                case ItemKind::Spring:
+                    on = lesson->editableSpring(item).test(bit);
+                    break;
+                case ItemKind::Joint:
+                    on = lesson->editableJoint(item).test(bit);
+                    break;
+                case ItemKind::World:
                     on = lesson->editableWorld.test(bit);
-                else
-                    on = lesson->editable(model::BodyId{static_cast<std::uint32_t>(index)}).test(bit);
+                    break;
+                case ItemKind::Body:
+                    on = lesson->editable(model::BodyId{static_cast<std::uint32_t>(item)}).test(bit);
+                    break;
+                }
             }
             child->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
             child->setCheckState(0, checkState(on));
@@ -330,31 +365,29 @@ void LessonEditor::onLockChanged(QTreeWidgetItem* item)
     const int index = parent->data(0, kIndexRole).toInt();
     model::Lesson lesson = *current;
     QString actionName;
-    if (parent->data(0, kSpringRole).toBool()) {
-        model::SpringAttributes attributes;
-        for (int i = 0; i < parent->childCount(); ++i)
-            attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),
-                           parent->child(i)->checkState(0) == Qt::Checked);
-        lesson.setEditableSpring(static_cast<std::size_t>(index), attributes);
+    switch (kindOf(parent)) {
+    case ItemKind::Spring:
+        lesson.setEditableSpring(static_cast<std::size_t>(index), tickedAttributes<model::kSpringAttributeCount>(parent));
         actionName = tr("Change what students may change of spring %1").arg(index);
-    } else if (index == kWorldItem) {
-        model::WorldAttributes attributes;
-        for (int i = 0; i < parent->childCount(); ++i)
-            attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),
-                           parent->child(i)->checkState(0) == Qt::Checked);
-        lesson.editableWorld = attributes;
+        break;
+    case ItemKind::Joint:
+        lesson.setEditableJoint(static_cast<std::size_t>(index), tickedAttributes<model::kJointAttributeCount>(parent));
+        actionName = tr("Change what students may change of joint %1").arg(index);
+        break;
+    case ItemKind::World:
+        lesson.editableWorld = tickedAttributes<model::kWorldAttributeCount>(parent);
         actionName = tr("Change which world settings students may change");
-    } else {
-        model::BodyAttributes attributes;
-        for (int i = 0; i < parent->childCount(); ++i)
-            attributes.set(static_cast<std::size_t>(parent->child(i)->data(0, kIndexRole).toInt()),
-                           parent->child(i)->checkState(0) == Qt::Checked);
-        lesson.setEditable(model::BodyId{static_cast<std::uint32_t>(index)}, attributes);
+        break;
+    case ItemKind::Body: {
+        lesson.setEditable(model::BodyId{static_cast<std::uint32_t>(index)},
+                           tickedAttributes<model::kBodyAttributeCount>(parent));
         const model::World& world = m_session.document().world();
         const QString name = static_cast<std::size_t>(index) < world.bodies.size()
             ? QString::fromStdString(world.bodies[static_cast<std::size_t>(index)].name)
             : QString();
         actionName = tr("Change what students may change of “%1”").arg(name);
+        break;
+    }
     }
     {
         const QSignalBlocker blocker(m_locks);

@@ -217,6 +217,10 @@ void LessonPanel::updateLocks()
         if (entry.spring < world.springs.size())
             parts << tr("spring %1: %2").arg(entry.spring).arg(springAttributeList(entry.attributes));
     }
+    for (const model::EditableJoint& entry : lesson->editableJoints) {
+        if (entry.joint < world.joints.size())
+            parts << tr("joint %1: %2").arg(entry.joint).arg(jointAttributeList(entry.attributes));
+    }
     if (lesson->editableWorld.any())
         parts << tr("world: %1").arg(attributeList(lesson->editableWorld));
     m_locks->setText(parts.isEmpty()

@@ -3,7 +3,28 @@
 #include "view/lesson_text.h"
 #include "view/scene_document.h"
 
+#include <array>
+#include <bitset>
+
 namespace impetus::view {
+
+namespace {
+
+/// The first of `lock`'s answers for the attributes of `all` that are in `changed` (in that
+/// order), or nullopt when none of them is locked.
+template <class Attribute, std::size_t N, class Lock>
+std::optional<QString> firstLock(const std::bitset<N>& changed, const std::array<Attribute, N>& all, Lock lock)
+{
+    for (const Attribute attribute : all) {
+        if (!changed.test(static_cast<std::size_t>(attribute)))
+            continue;
+        if (std::optional<QString> reason = lock(attribute))
+            return reason;
+    }
+    return std::nullopt;
+}
+
+} // namespace
 
 LessonSession::LessonSession(SceneDocument& document, QObject* parent)
     : QObject(parent)
@@ -66,33 +87,30 @@ std::optional<QString> LessonSession::refusal(int body, const model::Body& befor
     // lets its shape change lets it move that much.
     if (changed.test(static_cast<std::size_t>(model::BodyAttribute::ShapeSize)))
         changed.reset(static_cast<std::size_t>(model::BodyAttribute::Position));
-    for (const model::BodyAttribute attribute : model::kBodyAttributes) {
-        if (!changed.test(static_cast<std::size_t>(attribute)))
-            continue;
-        if (std::optional<QString> lock = bodyLock(body, attribute))
-            return lock;
-    }
-    return std::nullopt;
+    return firstLock(changed, model::kBodyAttributes,
+                     [&](model::BodyAttribute attribute) { return bodyLock(body, attribute); });
 }
 
 std::optional<QString> LessonSession::refusal(const model::WorldSettings& before,
                                               const model::WorldSettings& after) const
 {
-    const model::WorldAttributes changed = model::changedAttributes(before, after);
-    for (const model::WorldAttribute attribute : model::kWorldAttributes) {
-        if (!changed.test(static_cast<std::size_t>(attribute)))
-            continue;
-        if (std::optional<QString> lock = worldLock(attribute))
-            return lock;
-    }
-    return std::nullopt;
+    return firstLock(model::changedAttributes(before, after), model::kWorldAttributes,
+                     [&](model::WorldAttribute attribute) { return worldLock(attribute); });
 }
 
-std::optional<QString> LessonSession::connectionLock() const
+std::optional<QString> LessonSession::jointLock(int joint, model::JointAttribute attribute) const
 {
-    if (!locksInForce())
+    if (!locksInForce() || (joint >= 0 && lesson()->allows(static_cast<std::size_t>(joint), attribute)))
         return std::nullopt;
-    return tr("Locked by the lesson: joints can't be changed.");
+    return tr("Locked by the lesson: the %1 of joint %2 can't be changed.").arg(attributeTitle(attribute)).arg(joint);
+}
+
+std::optional<QString> LessonSession::refusal(int joint, const model::Joint& before, const model::Joint& after) const
+{
+    if (locksInForce() && model::changesEnds(before, after))
+        return tr("Locked by the lesson: joint %1 can't be changed to another type or to other bodies.").arg(joint);
+    return firstLock(model::changedAttributes(before, after), model::kJointAttributes,
+                     [&](model::JointAttribute attribute) { return jointLock(joint, attribute); });
 }
 
 std::optional<QString> LessonSession::springLock(int spring, model::SpringAttribute attribute) const
@@ -106,14 +124,8 @@ std::optional<QString> LessonSession::refusal(int spring, const model::Spring& b
 {
     if (locksInForce() && model::changesEnds(before, after))
         return tr("Locked by the lesson: spring %1 can't be joined to other bodies.").arg(spring);
-    const model::SpringAttributes changed = model::changedAttributes(before, after);
-    for (const model::SpringAttribute attribute : model::kSpringAttributes) {
-        if (!changed.test(static_cast<std::size_t>(attribute)))
-            continue;
-        if (std::optional<QString> lock = springLock(spring, attribute))
-            return lock;
-    }
-    return std::nullopt;
+    return firstLock(model::changedAttributes(before, after), model::kSpringAttributes,
+                     [&](model::SpringAttribute attribute) { return springLock(spring, attribute); });
 }
 
 std::optional<QString> LessonSession::springNote(int spring) const
@@ -124,6 +136,16 @@ std::optional<QString> LessonSession::springNote(int spring) const
     if (editable.none())
         return tr("Locked by the lesson: this spring can't be changed.");
     return tr("Locked by the lesson. You may change its %1.").arg(springAttributeList(editable));
+}
+
+std::optional<QString> LessonSession::jointNote(int joint) const
+{
+    if (!locksInForce() || joint < 0)
+        return std::nullopt;
+    const model::JointAttributes editable = lesson()->editableJoint(static_cast<std::size_t>(joint));
+    if (editable.none())
+        return tr("Locked by the lesson: this joint can't be changed.");
+    return tr("Locked by the lesson. You may change its %1.").arg(jointAttributeList(editable));
 }
 
 std::optional<QString> LessonSession::poseLock(const std::vector<int>& bodies, bool moves, bool turns) const

@@ -54,8 +54,10 @@ public:
     std::optional<QString> refusal(int body, const model::Body& before, const model::Body& after) const;
     /// Why the edit of the world settings from `before` to `after` is refused, or nullopt.
     std::optional<QString> refusal(const model::WorldSettings& before, const model::WorldSettings& after) const;
-    /// Why joints cannot be changed now (a lesson locks all of them), or nullopt.
-    std::optional<QString> connectionLock() const;
+    /// Why students may not change `attribute` of joint `joint` now, or nullopt when they may.
+    std::optional<QString> jointLock(int joint, model::JointAttribute attribute) const;
+    /// Why the edit of joint `joint` from `before` to `after` is refused, or nullopt when allowed.
+    std::optional<QString> refusal(int joint, const model::Joint& before, const model::Joint& after) const;
     /// Why students may not change `attribute` of spring `spring` now, or nullopt when they may.
     std::optional<QString> springLock(int spring, model::SpringAttribute attribute) const;
     /// Why the edit of spring `spring` from `before` to `after` is refused, or nullopt when allowed.
@@ -75,6 +77,8 @@ public:
     std::optional<QString> worldNote() const;
     /// What the attribute pane says about spring `spring`, or nullopt.
     std::optional<QString> springNote(int spring) const;
+    /// What the attribute pane says about joint `joint`, or nullopt.
+    std::optional<QString> jointNote(int joint) const;
 
 signals:
     /// Lesson › Edit was turned on or off.

@@ -68,6 +68,15 @@ QString attributeTitle(model::SpringAttribute attribute)
     return {};
 }
 
+QString attributeTitle(model::JointAttribute attribute)
+{
+    switch (attribute) {
+    case model::JointAttribute::Anchors:
+        return QCoreApplication::translate("impetus::view::LessonText", "anchors");
+    }
+    return {};
+}
+
 namespace {
 
 /// The titles of the attributes of `all` that are in `attributes`, in that order, joined by ", ".
@@ -87,6 +96,11 @@ QString joinedTitles(const std::bitset<N>& attributes, const std::array<Attribut
 QString springAttributeList(const model::SpringAttributes& attributes)
 {
     return joinedTitles(attributes, model::kSpringAttributes);
+}
+
+QString jointAttributeList(const model::JointAttributes& attributes)
+{
+    return joinedTitles(attributes, model::kJointAttributes);
 }
 
 QString attributeList(const model::BodyAttributes& attributes) { return joinedTitles(attributes, model::kBodyAttributes); }

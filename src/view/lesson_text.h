@@ -22,11 +22,16 @@ QString attributeTitle(model::WorldAttribute attribute);
 /// The translated name of a spring attribute, in lower case ("stiffness", "rest length").
 QString attributeTitle(model::SpringAttribute attribute);
 
+/// The translated name of a joint attribute, in lower case ("anchors").
+QString attributeTitle(model::JointAttribute attribute);
+
 /// The names of the attributes in `attributes`, in the scene format's order, joined by ", ".
 QString attributeList(const model::BodyAttributes& attributes);
 /// The names of the spring attributes in `attributes`, joined by ", " (SpringAttributes and
 /// WorldAttributes are the same bitset type, hence its own name).
 QString springAttributeList(const model::SpringAttributes& attributes);
+/// The names of the joint attributes in `attributes`, joined by ", ".
+QString jointAttributeList(const model::JointAttributes& attributes);
 /// The names of the world settings in `attributes`, joined by ", ".
 QString attributeList(const model::WorldAttributes& attributes);
 

@@ -741,10 +741,6 @@ std::optional<QString> PropertyPane::commitBody(model::Body body, const QString&
 
 std::optional<QString> PropertyPane::commitJoint(model::Joint joint, const QString& actionName)
 {
-    if (m_lesson) {
-        if (std::optional<QString> lock = m_lesson->connectionLock())
-            return lock;
-    }
     // The derived anchors and length follow from the edited ones and the bodies' current poses,
     // exactly as the scene loader derives them at load time.
     if (joint.type == model::JointType::Pin) {
@@ -762,6 +758,10 @@ std::optional<QString> PropertyPane::commitJoint(model::Joint joint, const QStri
     }
     if (joint == m_joint)
         return std::nullopt;
+    if (m_lesson) {
+        if (std::optional<QString> lock = m_lesson->refusal(m_index, m_joint, joint))
+            return lock;
+    }
     m_joint = joint;
     emit jointEdited(m_index, m_joint, actionName);
     display(true);
@@ -1177,10 +1177,15 @@ bool PropertyPane::locked(const QWidget* field) const
         const std::optional<model::SpringAttribute> attribute = springAttributeOf(field->objectName());
         return attribute ? m_lesson->springLock(m_index, *attribute).has_value() : m_lesson->locksInForce();
     }
-    case Page::Joint:
-        break;
+    case Page::Joint: {
+        // Every field of a joint that can be typed in is one of its anchors.
+        const bool anchor = field->objectName().startsWith(QLatin1String("pinAnchor")) ||
+                            field->objectName().startsWith(QLatin1String("rodAnchor"));
+        return anchor ? m_lesson->jointLock(m_index, model::JointAttribute::Anchors).has_value()
+                      : m_lesson->locksInForce();
     }
-    return m_lesson->connectionLock().has_value();
+    }
+    return m_lesson->locksInForce();
 }
 
 void PropertyPane::applyLocks()
@@ -1198,7 +1203,7 @@ void PropertyPane::applyLocks()
             note = m_lesson->springNote(m_index);
             break;
         case Page::Joint:
-            note = m_lesson->connectionLock();
+            note = m_lesson->jointNote(m_index);
             break;
         }
     }

@@ -9,6 +9,16 @@ namespace impetus::view {
 
 namespace {
 
+/// One flag per item of a list of `count`, set for the indices in `removed` (index, item) pairs.
+template <class Item>
+std::vector<bool> removedFlags(std::size_t count, const std::vector<std::pair<std::size_t, Item>>& removed)
+{
+    std::vector<bool> flags(count, false);
+    for (const auto& entry : removed)
+        flags[entry.first] = true;
+    return flags;
+}
+
 /// Applies `map` to every body reference of the springs, joints and contacts of `world`. `map`
 /// keeps the order of indices, so the contacts stay sorted.
 void remapBodyIds(model::World& world, const std::function<std::uint32_t(std::uint32_t)>& map)
@@ -138,14 +148,9 @@ void RemoveCommand::redo()
         };
         forgetContactsOf(world, removed);
         if (world.lesson) {
-            std::vector<bool> flags(world.bodies.size(), false);
-            for (const auto& body : m_bodies)
-                flags[body.first] = true;
-            world.lesson->removeBodies(flags);
-            std::vector<bool> springFlags(world.springs.size(), false);
-            for (const auto& spring : m_springs)
-                springFlags[spring.first] = true;
-            world.lesson->removeSprings(springFlags);
+            world.lesson->removeBodies(removedFlags(world.bodies.size(), m_bodies));
+            world.lesson->removeSprings(removedFlags(world.springs.size(), m_springs));
+            world.lesson->removeJoints(removedFlags(world.joints.size(), m_joints));
         }
         eraseAt(world.springs, m_springs);
         eraseAt(world.joints, m_joints);

@@ -13,14 +13,15 @@
 namespace impetus::model {
 namespace {
 
-/// A scene with a fixed floor and a ball hanging on a spring (spring 0) from a world point, and
-/// `lesson` (JSON text) as its lesson, if not empty.
+/// A scene with a fixed floor and a ball hanging on a spring (spring 0) and a rod (joint 0) from
+/// world points, and `lesson` (JSON text) as its lesson, if not empty.
 std::string sceneWithLesson(const std::string& lesson)
 {
     std::string text = R"({"format":"impetus-scene","version":1,"bodies":[)"
                        R"({"name":"floor","shape":{"type":"box","width":4,"height":0.2},"position":[0,0],"fixed":true},)"
                        R"({"name":"ball","shape":{"type":"circle","radius":0.2},"position":[0,1]}],)"
-                       R"("springs":[{"bodyA":"ball","anchorA":[0,0],"anchorB":[0,2],"stiffness":50}])";
+                       R"("springs":[{"bodyA":"ball","anchorA":[0,0],"anchorB":[0,2],"stiffness":50}],)"
+                       R"("joints":[{"type":"rod","bodyA":"ball","anchorA":[0,0],"anchorB":[1,2]}])";
     if (!lesson.empty())
         text += R"(,"lesson":)" + lesson;
     return text + "}";
@@ -50,6 +51,7 @@ constexpr const char* kFullLesson = R"({
   "editable": [{"body": "ball", "attributes": ["velocity", "friction"]}],
   "editableWorld": ["gravity"],
   "editableSprings": [{"spring": 0, "attributes": ["stiffness", "restLength"]}],
+  "editableJoints": [{"joint": 0, "attributes": ["anchors"]}],
   "questions": [{"prompt": "How far does it roll?", "answer": 1.5, "unit": "m", "tolerance": 0.1},
                 {"prompt": "A pure number?", "answer": -2, "tolerance": 0.5}]
 })";
@@ -110,6 +112,28 @@ TEST(LessonWriting, RoundTripKeepsTheLesson)
     EXPECT_EQ(serializeScene(*second.world), text);
 }
 
+TEST(LessonReading, ReadsWhichJointsStudentsMayMove)
+{
+    const SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
+    ASSERT_TRUE(result.ok()) << describe(result.problems);
+    const Lesson& lesson = *result.world->lesson;
+    ASSERT_EQ(lesson.editableJoints.size(), 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{0}, JointAttribute::Anchors));
+    EXPECT_FALSE(lesson.allows(std::size_t{1}, JointAttribute::Anchors));
+    const std::string text = serializeScene(*result.world);
+    EXPECT_NE(text.find(R"("editableJoints": [)"), std::string::npos) << text;
+    EXPECT_NE(text.find(R"("joint": 0,
+        "attributes": ["anchors"])"),
+              std::string::npos)
+        << text;
+    // A lesson without the key locks every joint, and is written with an empty list.
+    const SceneLoadResult locked = parseScene(sceneWithLesson(R"({"title":"t"})"));
+    ASSERT_TRUE(locked.ok()) << describe(locked.problems);
+    EXPECT_TRUE(locked.world->lesson->editableJoints.empty());
+    EXPECT_FALSE(locked.world->lesson->allows(std::size_t{0}, JointAttribute::Anchors));
+    EXPECT_NE(serializeScene(*locked.world).find(R"("editableJoints": [])"), std::string::npos);
+}
+
 TEST(LessonReading, ReadsWhichSpringAttributesStudentsMayChange)
 {
     const SceneLoadResult result = parseScene(sceneWithLesson(kFullLesson));
@@ -143,6 +167,7 @@ TEST(LessonWriting, FollowsARenamedBodyAndDropsARemovedOne)
     world.lesson->removeBodies({true, false});
     world.bodies.erase(world.bodies.begin());
     world.springs[0].bodyA = BodyId{0};
+    world.joints[0].bodyA = BodyId{0};
     SceneLoadResult removed = parseScene(serializeScene(world));
     ASSERT_TRUE(removed.ok()) << describe(removed.problems);
     EXPECT_TRUE(removed.world->lesson->allows(BodyId{0}, BodyAttribute::Friction));
@@ -212,6 +237,23 @@ const BadLesson kBadLessons[] = {
      "lesson.editableSprings[0].attributes[0]", "unknown attribute 'length' (expected one of: stiffness, damping, restLength, anchors)"},
     {"spring-no-attributes", R"({"title":"t","editableSprings":[{"spring":0,"attributes":[]}]})",
      "lesson.editableSprings[0].attributes", "at least one attribute (leave the spring out to lock it)"},
+    {"joints-not-an-array", R"({"title":"t","editableJoints":{"joint":0}})", "lesson.editableJoints",
+     "expected an array"},
+    {"joint-unknown-key", R"({"title":"t","editableJoints":[{"joint":0,"attributes":["anchors"],"spring":0}]})",
+     "lesson.editableJoints[0]", "unknown key 'spring'"},
+    {"joint-missing-index", R"({"title":"t","editableJoints":[{"attributes":["anchors"]}]})",
+     "lesson.editableJoints[0]", "missing required key 'joint'"},
+    {"joint-out-of-range", R"({"title":"t","editableJoints":[{"joint":1,"attributes":["anchors"]}]})",
+     "lesson.editableJoints[0].joint", "no joint 1 (the scene has 1 joint, index 0)"},
+    {"joint-not-whole", R"({"title":"t","editableJoints":[{"joint":"0","attributes":["anchors"]}]})",
+     "lesson.editableJoints[0].joint", "expected the index of a joint (a whole number), got \"0\""},
+    {"joint-twice",
+     R"({"title":"t","editableJoints":[{"joint":0,"attributes":["anchors"]},{"joint":0,"attributes":["anchors"]}]})",
+     "lesson.editableJoints[1].joint", "joint 0 is listed twice (lesson.editableJoints[0]"},
+    {"joint-unknown-attribute", R"({"title":"t","editableJoints":[{"joint":0,"attributes":["length"]}]})",
+     "lesson.editableJoints[0].attributes[0]", "unknown attribute 'length' (expected one of: anchors)"},
+    {"joint-no-attributes", R"({"title":"t","editableJoints":[{"joint":0,"attributes":[]}]})",
+     "lesson.editableJoints[0].attributes", "at least one attribute (leave the joint out to lock it)"},
     {"question-not-an-object", R"({"title":"t","questions":["why?"]})", "lesson.questions[0]",
      "expected an object"},
     {"question-unknown-key", R"({"title":"t","questions":[{"prompt":"p","answer":1,"tolerance":1,"hint":"h"}]})",
@@ -372,6 +414,47 @@ TEST(LessonType, SpringEntriesFollowRemovalsAndEditsNameTheirAttributes)
     EXPECT_TRUE(changed.test(static_cast<std::size_t>(SpringAttribute::RestLength)));
     EXPECT_TRUE(changed.test(static_cast<std::size_t>(SpringAttribute::Anchors)));
     EXPECT_FALSE(changesEnds(before, after));
+    after.bodyB = BodyId{1};
+    EXPECT_TRUE(changesEnds(before, after));
+}
+
+// Joints too are listed by index. Moving a rod's end or a pin's hinge changes its anchors (a
+// pin's derived anchors and a rod's length with them); another type or other bodies is not an
+// attribute.
+TEST(LessonType, JointEntriesFollowRemovalsAndEditsNameTheirAttributes)
+{
+    EXPECT_EQ(attributeName(JointAttribute::Anchors), "anchors");
+    EXPECT_EQ(jointAttributeFromName("anchors"), JointAttribute::Anchors);
+    EXPECT_FALSE(jointAttributeFromName("hinge").has_value());
+    Lesson lesson;
+    JointAttributes anchors;
+    anchors.set(static_cast<std::size_t>(JointAttribute::Anchors));
+    lesson.setEditableJoint(2, anchors);
+    lesson.setEditableJoint(0, anchors);
+    lesson.setEditableJoint(0, JointAttributes());
+    ASSERT_EQ(lesson.editableJoints.size(), 1u);
+    lesson.removeJoints({true, false, false});
+    ASSERT_EQ(lesson.editableJoints.size(), 1u);
+    EXPECT_EQ(lesson.editableJoints[0].joint, 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{1}, JointAttribute::Anchors));
+    lesson.removeJoints({false, true});
+    EXPECT_TRUE(lesson.editableJoints.empty());
+
+    Joint before;
+    before.type = JointType::Rod;
+    before.anchorB = Vec2(0, 2);
+    before.length = 2;
+    Joint after = before;
+    EXPECT_TRUE(changedAttributes(before, after).none());
+    after.impulse = Vec2(3, 0); // the solver's state, not an attribute
+    EXPECT_TRUE(changedAttributes(before, after).none());
+    after.anchorB = Vec2(0, 3);
+    after.length = 3;
+    EXPECT_TRUE(changedAttributes(before, after).test(static_cast<std::size_t>(JointAttribute::Anchors)));
+    EXPECT_FALSE(changesEnds(before, after));
+    after.type = JointType::Pin;
+    EXPECT_TRUE(changesEnds(before, after));
+    after = before;
     after.bodyB = BodyId{1};
     EXPECT_TRUE(changesEnds(before, after));
 }

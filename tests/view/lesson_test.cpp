@@ -108,6 +108,7 @@ private slots:
     void editUnlocksABodyForStudentsAndIsUndoable();
     void editUnlocksOneAttributeOfASpring();
     void lockTreeTellsABodyNamedLikeASpringFromTheSpring();
+    void editLetsStudentsMoveOneJointsAnchors();
 
 private:
     void open(model::World world);
@@ -501,6 +502,90 @@ void LessonTest::lockTreeTellsABodyNamedLikeASpringFromTheSpring()
     QCOMPARE(child<QTreeWidget>("lessonLocksTree")->topLevelItem(2)->text(0), QStringLiteral("Spring 0 (“ball” to the world)"));
     QVERIFY(childTexts(2).contains(QStringLiteral("stiffness")));
     QVERIFY(!childTexts(2).contains(QStringLiteral("size")));
+}
+
+// A pendulum lab: the teacher lets students move the ends of the ball's rod (to change its
+// length) and leaves the block's pin locked. Before, the rod is locked whole; after, its anchor
+// fields take typing, the pane and the lesson panel say so, and the edit is one undo step; the pin
+// stays locked. Deleting the ball (as the teacher) takes the rod and its entry with it.
+void LessonTest::editLetsStudentsMoveOneJointsAnchors()
+{
+    model::World world = lockedWorld();
+    model::Joint rod;
+    rod.type = model::JointType::Rod;
+    rod.bodyA = model::BodyId{2};
+    rod.anchorB = Vec2(1.5, 2.5);
+    rod.length = 2;
+    world.joints.push_back(rod);
+    model::Joint pin;
+    pin.bodyA = model::BodyId{1};
+    pin.worldAnchor = Vec2(-1, 0.9);
+    pin.anchorA = Vec2(0, 0.4);
+    pin.anchorB = pin.worldAnchor;
+    world.joints.push_back(pin);
+    open(world);
+    PropertyPane* pane = m_window->propertyPane();
+    CanvasView& canvas = m_window->canvas();
+    const auto selectRod = [&] {
+        QTest::keyClick(canvas.viewport(), Qt::Key_S);
+        QTest::mouseClick(canvas.viewport(), Qt::LeftButton, {}, pixelOf(canvas, QPointF(1.5, 1.5)));
+    };
+    selectRod();
+    QCOMPARE(m_window->document().selection(), (Selection{{}, {}, {0}}));
+    auto* anchorY = pane->findChild<QLineEdit*>(QStringLiteral("rodAnchorBY"));
+    QVERIFY(anchorY);
+    QVERIFY(anchorY->isReadOnly());
+    QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson: this joint can't be changed."));
+
+    editAction()->trigger();
+    auto* tree = child<QTreeWidget>("lessonLocksTree");
+    QTreeWidgetItem* rodItem = nullptr;
+    bool pinListed = false;
+    for (int i = 0; i < tree->topLevelItemCount(); ++i) {
+        rodItem = tree->topLevelItem(i)->text(0) == QStringLiteral("Rod 0 (“ball” to the world)") ? tree->topLevelItem(i) : rodItem;
+        pinListed = pinListed || tree->topLevelItem(i)->text(0) == QStringLiteral("Pin 1 (“block” to the world)");
+    }
+    QVERIFY(rodItem);
+    QVERIFY(pinListed);
+    QCOMPARE(rodItem->childCount(), 1);
+    QCOMPARE(rodItem->child(0)->text(0), QStringLiteral("anchors"));
+    tree->expandItem(rodItem);
+    tree->setFocus();
+    tree->setCurrentItem(rodItem->child(0));
+    QTest::keyClick(tree, Qt::Key_Space);
+    QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::JointAttribute::Anchors));
+    QVERIFY(!m_window->runner().world().lesson->allows(std::size_t{1}, model::JointAttribute::Anchors));
+
+    editAction()->trigger();
+    QVERIFY(m_window->lesson().locksInForce());
+    selectRod();
+    QVERIFY(!anchorY->isReadOnly());
+    QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson. You may change its anchors."));
+    QCOMPARE(child<QLabel>("lessonLocks")->text(),
+             QStringLiteral("You may change “ball”: friction; joint 0: anchors. Everything else is locked by the lesson."));
+    const int before = m_window->document().undoStack()->count();
+    typeInto(anchorY, QStringLiteral("3"));
+    QCOMPARE(m_window->runner().world().joints[0].anchorB, Vec2(1.5, 3));
+    QCOMPARE(m_window->runner().world().joints[0].length, 2.5);
+    QCOMPARE(m_window->document().undoStack()->count(), before + 1);
+
+    // The pin is still locked whole.
+    m_window->document().setSelection(Selection{{}, {}, {1}});
+    auto* hingeX = pane->findChild<QLineEdit*>(QStringLiteral("pinAnchorX"));
+    QVERIFY(hingeX && hingeX->isReadOnly());
+    QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson: this joint can't be changed."));
+    typeInto(hingeX, QStringLiteral("0"));
+    QCOMPARE(m_window->runner().world().joints[1].worldAnchor, Vec2(-1, 0.9));
+
+    // The teacher deletes the ball: its rod goes, and so does the rod's entry; the pin is joint 0.
+    editAction()->trigger();
+    m_window->document().setSelection(Selection{{2}, {}, {}});
+    m_window->deleteAction()->trigger();
+    QCOMPARE(m_window->runner().world().joints.size(), std::size_t{1});
+    QVERIFY(m_window->runner().world().lesson->editableJoints.empty());
+    m_window->undoAction()->trigger();
+    QCOMPARE(m_window->runner().world().joints.size(), std::size_t{2});
+    QVERIFY(m_window->runner().world().lesson->allows(std::size_t{0}, model::JointAttribute::Anchors));
 }
 
 QTEST_MAIN(LessonTest)
