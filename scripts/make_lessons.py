@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the four lesson scenes in resources/examples/ (lesson-*.json).
+"""Writes the five lesson scenes in resources/examples/ (lesson-*.json).
 
 A lesson is a scene with a `lesson` block (docs/scene-format.md, "Lessons"): what students may
 change, instructions and questions with numeric answers. The answers are computed here from the
@@ -251,8 +251,62 @@ def spring_period():
           {**scene(world("rk4", gravity=(0, 0)), bodies, springs=springs), "lesson": text})
 
 
+# ---- Tuning a pendulum: the seconds pendulum ----------------------------------------------------
+
+def pendulum_tuning():
+    """A 1 kg bob on a 1.5 m rod to a pivot, pulled 0.15 m to the side and let go. Students may move
+    the rod's ends (an editableJoints entry): moving the pivot changes the length, while the bob
+    stays where it is, so the amplitude is θ₀ = asin(d/L). The period is T = 4√(L/g)·K(sin(θ₀/2));
+    the seconds pendulum (T = 2 s) is the L that solves T(L) = 2, a hair under g/π² = 0.994 m."""
+    side = 0.15
+    start_length = 1.5
+    pivot = (0.0, 3.0)
+    bob = (pivot[0] + side, pivot[1] - math.sqrt(start_length ** 2 - side ** 2))
+
+    def period(length):
+        return pendulum_period(length, G, math.asin(side / length))
+
+    # T grows with L (the amplitude's shrinking takes off far less): bisect T(L) = 2 s.
+    low, high = 0.5, 1.5
+    for _ in range(80):
+        mid = (low + high) / 2
+        low, high = (mid, high) if period(mid) < 2.0 else (low, mid)
+    seconds_length = (low + high) / 2
+    quarter = start_length / 4
+    bodies = [
+        fixed("floor", box(6, 0.2), (0.0, -0.1)),
+        body("bob", circle(0.15), bob, PALETTE[4], mass=1.0),
+    ]
+    joints = [{"type": "rod", "bodyA": "bob", "anchorA": [0, 0], "bodyB": None, "anchorB": vec(*pivot)}]
+    text = lesson(
+        "Tuning a pendulum: the seconds pendulum",
+        [
+            "A 1 kg bob hangs on a light rod 1.5 m long. It is pulled 0.15 m to the side and let go.",
+            "",
+            "Measure the period: select the bob, open **View › New Graph** and read the time between "
+            "two crests of x, or count swings against the time in the status bar.",
+            "",
+            "You may move the rod's ends: select the rod (click it) and, in the pane, change "
+            "**Anchor B**, the pivot, a point of the world. Moving the pivot down shortens the rod; "
+            "the pane shows its **Length**. The bob stays where it is, so a shorter rod swings wider. "
+            "Everything else is locked by the lesson.",
+            "",
+            "Theory: T ≈ 2π√(L/g) for small swings, a little longer for wide ones.",
+        ],
+        editable_joints=[{"joint": 0, "attributes": ["anchors"]}],
+        questions=[
+            question("What is the period of the 1.5 m pendulum?", period(start_length), "s", 0.01),
+            question("Move the pivot until the period is 2.00 s (a seconds pendulum: one second each way). "
+                     "How long is the rod then?", seconds_length, "m", 0.01),
+            question("Make the rod 0.375 m long, a quarter of its length at the start. What is the period "
+                     "now?", period(quarter), "s", 0.01),
+        ])
+    write("lesson-pendulum-tuning.json", {**scene(world("rk4"), bodies, joints=joints), "lesson": text})
+
+
 if __name__ == "__main__":
     incline_friction()
     cart_crash()
     pendulum_length()
     spring_period()
+    pendulum_tuning()

@@ -657,6 +657,10 @@
         <source>Lesson: spring period and stiffness</source>
         <translation>Lektion: Periode und Federkonstante einer Feder</translation>
     </message>
+    <message>
+        <source>Lesson: tuning a pendulum</source>
+        <translation>Lektion: ein Pendel abstimmen</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::GraphPanel</name>

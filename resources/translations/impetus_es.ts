@@ -657,6 +657,10 @@
         <source>Lesson: spring period and stiffness</source>
         <translation>Lección: periodo y constante de un muelle</translation>
     </message>
+    <message>
+        <source>Lesson: tuning a pendulum</source>
+        <translation>Lección: afinar un péndulo</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::GraphPanel</name>

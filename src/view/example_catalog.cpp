@@ -44,6 +44,7 @@ QString exampleTitle(const QString& baseName)
         {"lesson-cart-crash", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: momentum in a cart crash")},
         {"lesson-incline-friction", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: friction on an incline")},
         {"lesson-pendulum-length", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: pendulum period and length")},
+        {"lesson-pendulum-tuning", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: tuning a pendulum")},
         {"lesson-spring-period", QT_TRANSLATE_NOOP("impetus::view::Examples", "Lesson: spring period and stiffness")},
         {"newtons-cradle", QT_TRANSLATE_NOOP("impetus::view::Examples", "Newton's cradle")},
         {"pendulum", QT_TRANSLATE_NOOP("impetus::view::Examples", "Pendulum")},

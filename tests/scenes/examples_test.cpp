@@ -717,5 +717,57 @@ TEST(SpringLesson, StoredPeriodsMatchTheEngineAndTwoPiRootMOverK)
     expectAnswerMatches(lesson, 3, forTwoSeconds, 4 * std::numbers::pi * std::numbers::pi * mass / 4);
 }
 
+// Tuning a pendulum: students may move the rod's ends and nothing else. The bob stays where it
+// is, 0.15 m off the pivot's vertical, so the amplitude is asin(0.15 m / L). Each stored answer
+// holds the engine's period (the bob's upward crossings of the pivot's vertical) and
+// T = 4√(L/g)·K(sin(θ₀/2)); the seconds pendulum's length, set as a student would by moving the
+// pivot straight down, swings in 2 s.
+TEST(PendulumTuningLesson, StoredLengthAndPeriodsMatchTheEngineWithThePivotMoved)
+{
+    const model::World start = loadExample("lesson-pendulum-tuning.json");
+    const model::Lesson& lesson = lessonOf(start);
+    ASSERT_EQ(lesson.questions.size(), 3u);
+    ASSERT_EQ(start.joints.size(), 1u);
+    EXPECT_TRUE(lesson.allows(std::size_t{0}, model::JointAttribute::Anchors));
+    EXPECT_TRUE(lesson.editableBodies.empty());
+    EXPECT_TRUE(lesson.editableWorld.none());
+    const std::size_t bob = indexOf(start, "bob");
+    const model::Joint& rod = start.joints[0];
+    ASSERT_EQ(rod.type, model::JointType::Rod);
+    ASSERT_FALSE(rod.bodyB.has_value());
+    const Vec2 bobAt = start.bodies[bob].state.position;
+    const Scalar side = bobAt.x() - rod.anchorB.x();
+    const Scalar g = -start.settings.gravity.y();
+    // The period with the pivot moved straight up or down until the rod is `length` long, in the
+    // engine and by the formula.
+    const auto period = [&](Scalar length) {
+        model::World world = start;
+        model::Joint& moved = world.joints[0];
+        moved.anchorB = Vec2(rod.anchorB.x(), bobAt.y() + std::sqrt(length * length - side * side));
+        moved.length = (moved.anchorB - bobAt).norm();
+        EXPECT_NEAR(moved.length, length, 1e-12);
+        controller::Simulation simulation;
+        const Scalar amplitude = std::asin(side / length);
+        const Scalar formula = testing::pendulumPeriod(length, g, amplitude);
+        const Scalar measured = periodOfUpwardCrossings(simulation, world, 4.5 * formula,
+                                                        [&](const model::World& w) { return w.bodies[bob].state.position.x() - moved.anchorB.x(); });
+        return std::pair{measured, formula};
+    };
+    const auto [tStart, formulaStart] = period(rod.length);
+    EXPECT_NEAR(rod.length, 1.5, 1e-6); // the bob's position is stored to 6 decimals
+    expectAnswerMatches(lesson, 0, tStart, formulaStart);
+    // Question 2: the length the student finds for 2 s, checked by running it.
+    const Scalar secondsLength = lesson.questions[1].answer;
+    const auto [tSeconds, formulaSeconds] = period(secondsLength);
+    EXPECT_NEAR(tSeconds, 2.0, 0.002);
+    EXPECT_NEAR(formulaSeconds, 2.0, 0.002);
+    // A hair under g/π², the small-angle seconds pendulum: the 8.7° swing makes it slower.
+    EXPECT_LT(secondsLength, g / (std::numbers::pi * std::numbers::pi));
+    const auto [tQuarter, formulaQuarter] = period(rod.length / 4);
+    expectAnswerMatches(lesson, 2, tQuarter, formulaQuarter);
+    // At 23.6° the small-angle period, half the first, is too short to be accepted.
+    EXPECT_FALSE(lesson.questions[2].accepts(2 * std::numbers::pi * std::sqrt(rod.length / 4 / g)));
+}
+
 } // namespace
 } // namespace impetus
