@@ -1024,11 +1024,11 @@ void PropertyPane::showSelection(const model::World& world, const Selection& sel
 void PropertyPane::refresh(const model::World& world)
 {
     const Page before = m_page;
-    load(world);
+    load(world, true);
     display(m_page != before);
 }
 
-void PropertyPane::load(const model::World& world)
+void PropertyPane::load(const model::World& world, bool following)
 {
     const auto firstValid = [](const std::vector<int>& indices, std::size_t size) {
         for (const int index : indices) {
@@ -1046,6 +1046,8 @@ void PropertyPane::load(const model::World& world)
         return std::nullopt;
     };
 
+    const Page shownPage = m_page;
+    const int shownIndex = m_index;
     m_settings = world.settings;
     m_page = Page::World;
     m_index = -1;
@@ -1071,25 +1073,18 @@ void PropertyPane::load(const model::World& world)
         for (const model::Body& b : world.bodies)
             m_bodyNames.push_back(b.name);
     } else if (const int spring = firstValid(m_selection.springs, world.springs.size()); spring >= 0) {
+        // While it follows a run the spring's warning stays as it was judged when the spring was
+        // shown or last edited: judged at every step's poses (its tension and the bodies' turns
+        // change its fastest motion) it came and went as the bodies swung.
+        const bool sameSpring = shownPage == Page::Spring && shownIndex == spring &&
+                                m_spring == world.springs[static_cast<std::size_t>(spring)];
         m_page = Page::Spring;
         m_index = spring;
         m_spring = world.springs[static_cast<std::size_t>(spring)];
         m_endNameA = nameOf(m_spring.bodyA);
         m_endNameB = nameOf(m_spring.bodyB);
-        const std::optional<model::SceneProblem> warning = model::springWarning(world, static_cast<std::size_t>(spring));
-        m_springWarningText = warning ? tr("Warning: %1").arg(QString::fromStdString(warning->reason)) : QString();
-        // The step offered: a little under the longest that holds (so that rounding cannot land
-        // on the limit), to three significant digits, down.
-        m_stableStep.reset();
-        if (warning) {
-            if (const std::optional<double> longest = model::longestStableSpringStep(world, m_spring)) {
-                const double wanted = constants::kStableStepShare * *longest;
-                const double unit = std::pow(10.0, std::floor(std::log10(wanted)) - 2);
-                const double step = std::floor(wanted / unit) * unit;
-                if (step >= constants::kMinEditableTimeStep)
-                    m_stableStep = step;
-            }
-        }
+        if (!following || !sameSpring)
+            judgeSpring(world, static_cast<std::size_t>(spring));
     } else if (const int joint = firstValid(m_selection.joints, world.joints.size()); joint >= 0) {
         m_page = Page::Joint;
         m_index = joint;
@@ -1120,6 +1115,24 @@ void PropertyPane::load(const model::World& world)
         for (const model::SceneProblem& warning : warnings)
             lines << tr("Warning: %1").arg(QString::fromStdString(warning.toString()));
         m_worldWarningText = lines.join(QLatin1Char('\n'));
+    }
+}
+
+void PropertyPane::judgeSpring(const model::World& world, std::size_t spring)
+{
+    const std::optional<model::SceneProblem> warning = model::springWarning(world, spring);
+    m_springWarningText = warning ? tr("Warning: %1").arg(QString::fromStdString(warning->reason)) : QString();
+    // The step offered: a little under the longest that holds (so that rounding cannot land on
+    // the limit), to three significant digits, down.
+    m_stableStep.reset();
+    if (!warning)
+        return;
+    if (const std::optional<double> longest = model::longestStableSpringStep(world, world.springs[spring])) {
+        const double wanted = constants::kStableStepShare * *longest;
+        const double unit = std::pow(10.0, std::floor(std::log10(wanted)) - 2);
+        const double step = std::floor(wanted / unit) * unit;
+        if (step >= constants::kMinEditableTimeStep)
+            m_stableStep = step;
     }
 }
 

@@ -158,8 +158,12 @@ private:
     void chooseColor();
     void onColorChosen(const QColor& color);
 
-    /// Copies what the selection shows from `world` and picks the page.
-    void load(const model::World& world);
+    /// Copies what the selection shows from `world` and picks the page. `following`: a step of a
+    /// run, which leaves the shown spring's warning as it was judged (judgeSpring).
+    void load(const model::World& world, bool following = false);
+    /// Judges spring `spring` of `world` at its bodies' present poses: its warning and the time
+    /// step the pane offers.
+    void judgeSpring(const model::World& world, std::size_t spring);
     /// Puts the copies into the widgets; a focused field keeps its text unless `replaceFocused`.
     void display(bool replaceFocused);
     void displayBody(bool replaceFocused);

@@ -2,6 +2,7 @@
 // for (issue 17, item 6): opened from a file and typed by hand, in the real window.
 
 #include "test_settings.h"
+#include "model/scene_warnings.h"
 #include "view/main_window.h"
 #include "view/property_pane.h"
 #include "view/scene_document.h"
@@ -48,6 +49,16 @@ constexpr const char* kSpringScene =
     R"({"name": "box", "shape": {"type": "box", "width": 0.5, "height": 0.5}, "position": [0, 1], "mass": 1}],)"
     R"( "springs": [{"bodyA": "box", "anchorA": [0, 0], "anchorB": [0, 2], "stiffness": 100, "restLength": 0.5}]})";
 
+/// A thin bar spinning at 10 rad/s in zero gravity on a stiff spring from its end to a world point,
+/// under semi-implicit Euler at 1/60 s: as the bar turns, the spring's fastest motion (its pull
+/// across the bar turns it) passes the integrator's limit and falls back below it, step by step.
+constexpr const char* kSpinningBarScene =
+    R"({"format": "impetus-scene", "version": 1, "world": {"gravity": [0, 0], "timeStep": 0.016666666666666666,)"
+    R"( "integrator": "semi-implicit-euler"}, "bodies": [)"
+    R"({"name": "bar", "shape": {"type": "box", "width": 1, "height": 0.05}, "position": [0, 0], "mass": 1,)"
+    R"( "angularVelocity": 10}],)"
+    R"( "springs": [{"bodyA": "bar", "anchorA": [-0.5, 0], "anchorB": [-1.5, 0], "stiffness": 6000, "restLength": 1}]})";
+
 void typeAndEnter(QLineEdit* edit, const QString& text)
 {
     edit->setFocus();
@@ -67,6 +78,7 @@ private slots:
     void gravityTypedOutOfRangeShowsAWarningUntilItIsBack();
     void energyGrowingUnderExplicitEulerIsWarned();
     void springTooStiffForTheStepIsWarnedOnItsPage();
+    void springWarningHoldsStillWhileTheRunGoesOn();
 
 private:
     /// Writes `text` to a file in m_dir and opens it in `window`; false when it did not open.
@@ -192,6 +204,39 @@ void SettingWarningsTest::springTooStiffForTheStepIsWarnedOnItsPage()
     window.undoAction()->trigger();
     QCOMPARE(window.runner().world().settings.timeStep, 1.0 / 240);
     QTRY_VERIFY(warnings->isVisible());
+}
+
+// The spring's page judges the spring when it is shown or edited, not at every step of a run: the
+// spinning bar's spring is within the limit at the start and past it at some poses of the run, and
+// the warning must not come and go with them (it did, every few steps). An edit judges it again,
+// at the pose of the moment.
+void SettingWarningsTest::springWarningHoldsStillWhileTheRunGoesOn()
+{
+    MainWindow window;
+    QVERIFY(open(window, kSpinningBarScene));
+    window.show();
+    window.document().setSelection(impetus::view::Selection{{}, {0}, {}});
+    auto* pane = window.findChild<PropertyPane*>();
+    QVERIFY(pane);
+    auto* warnings = pane->findChild<QLabel*>(QStringLiteral("springWarnings"));
+    auto* damping = pane->findChild<QLineEdit*>(QStringLiteral("springDamping"));
+    QVERIFY(warnings && damping);
+    QVERIFY(!warnings->isVisible());
+    QVERIFY(!impetus::model::springWarning(window.runner().world(), 0).has_value());
+
+    int posesPastTheLimit = 0;
+    for (int step = 0; step < 12; ++step) {
+        window.runner().stepBy(1);
+        posesPastTheLimit += impetus::model::springWarning(window.runner().world(), 0).has_value() ? 1 : 0;
+        QVERIFY2(!warnings->isVisible(), qPrintable(QStringLiteral("the warning came at step %1").arg(step + 1)));
+    }
+    // The run did pass through poses at which the spring is past the limit.
+    QVERIFY(posesPastTheLimit > 0);
+
+    // An edit judges the spring again, where the bar is now.
+    typeAndEnter(damping, QStringLiteral("0.001"));
+    QCOMPARE(window.runner().world().springs[0].damping, 0.001);
+    QCOMPARE(warnings->isVisible(), impetus::model::springWarning(window.runner().world(), 0).has_value());
 }
 
 #include "setting_warnings_test.moc"
