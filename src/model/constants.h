@@ -126,6 +126,10 @@ inline constexpr int kEnergyCheckSteps = 240;
 /// At most this many pairs of bodies are named in mass-ratio warnings; the rest are counted.
 inline constexpr int kMaxMassRatioWarnings = 5;
 
+/// At most this many bodies are named in speed warnings (a body that crosses the whole scene in
+/// one solver step); the rest are counted.
+inline constexpr int kMaxSpeedWarnings = 5;
+
 /// Sequential-impulse iterations per step for velocities, and non-linear Gauss–Seidel iterations
 /// for positions. Box2D's defaults, which keep a 10-box stack standing at 60 Hz; at 240 Hz they
 /// are generous.

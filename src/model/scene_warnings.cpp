@@ -180,6 +180,53 @@ void checkMassRatios(const World& world, std::vector<SceneProblem>& out)
     }
 }
 
+/// Dynamic bodies so fast that they cross the whole scene (the box around every body) in one
+/// solver step: such a body may meet the same bodies many times within a step, more often than
+/// the impact pass resolves (kMaxImpactsPerPoint per contact point), and what is left goes to the
+/// contact forces, which do not keep restitution. A scene of one body has nothing to meet.
+void checkSpeeds(const World& world, std::vector<SceneProblem>& out)
+{
+    if (world.bodies.size() < 2)
+        return;
+    Vec2 lowest = Vec2::Constant(std::numeric_limits<Scalar>::infinity());
+    Vec2 highest = -lowest;
+    for (const Body& body : world.bodies) {
+        const Vec2 reach = Vec2::Constant(body.geometry.boundingRadius);
+        lowest = lowest.cwiseMin(Vec2(body.state.position - reach));
+        highest = highest.cwiseMax(Vec2(body.state.position + reach));
+    }
+    const Scalar across = (highest - lowest).maxCoeff();
+    if (!(across > 0) || !std::isfinite(across))
+        return;
+    const Scalar h = solverStep(world.settings.timeStep);
+    const Scalar fastest = across / h;
+    int reported = 0;
+    int more = 0;
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        const Body& body = world.bodies[i];
+        const Scalar speed = body.state.velocity.norm();
+        if (body.fixed || !(speed > fastest))
+            continue;
+        if (reported == constants::kMaxSpeedWarnings) {
+            ++more;
+            continue;
+        }
+        ++reported;
+        out.push_back({"bodies[" + std::to_string(i) + "]",
+                       "'" + body.name + "' moves at " + shown(speed) + " m/s, " + shownLength(speed * h) +
+                           " in one solver step of " + shown(h * kMillisecondsPerSecond) + " ms, more than the " +
+                           shownLength(across) + " across the whole scene: it may meet the same bodies more often in "
+                           "one step than the " + std::to_string(constants::kMaxImpactsPerPoint) +
+                           " impacts per contact point the solver resolves, and the contact forces that take the "
+                           "rest do not keep restitution (it loses energy); keep its speed at most " +
+                           shown(fastest) + " m/s at this step, or make the step smaller"});
+    }
+    if (more > 0) {
+        out.push_back({"bodies", "and " + std::to_string(more) + " more bodies that cross the whole scene in one "
+                                     "solver step"});
+    }
+}
+
 /// What goes wrong past the integrator's limit, for a motion that oscillates or one that is only
 /// damped.
 std::string integratorWords(IntegratorKind integrator, bool oscillates)
@@ -471,6 +518,7 @@ std::vector<SceneProblem> sceneWarnings(const World& world)
     checkTimeStep(world.settings, warnings);
     checkGravity(world.settings, warnings);
     checkMassRatios(world, warnings);
+    checkSpeeds(world, warnings);
     checkSpringSteps(world, warnings);
     return warnings;
 }

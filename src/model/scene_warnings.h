@@ -21,6 +21,10 @@ namespace impetus::model {
 ///   into substeps of at most kMaxSolverStep);
 /// - two dynamic bodies whose masses differ more than kMaxContactMassRatio times and that are
 ///   joined by a spring or joint, or touch at load time (their bounding circles overlap);
+/// - a dynamic body so fast that it crosses the whole scene (the box around every body's bounding
+///   circle) in one solver step, in a scene of two bodies or more: it may meet the same bodies
+///   more often in a step than the kMaxImpactsPerPoint impacts per contact point the impact pass
+///   resolves;
 /// - a spring so stiff, or so strongly damped, for the bodies it joins that the world's
 ///   integrator makes its fastest motion grow at the step it takes (the time step, or its
 ///   substep of at most kMaxSolverStep in a world with joints or soft bodies): longestStableStep

@@ -8,6 +8,7 @@
 #include "controller/simulation.h"
 #include "controller/solver_under_test.h"
 #include "model/example_scenes.h"
+#include "model/scene_warnings.h"
 #include "support/pendulum_theory.h"
 #include "support/world_builders.h"
 
@@ -374,6 +375,43 @@ TEST_P(AnyStep, FastBallDoesNotTunnelThroughAThinWall)
     EXPECT_NEAR(world.bodies[1].state.velocity.x(), -200.0, 1e-6);
     EXPECT_LT(world.bodies[1].state.position.x(), 5.0 - 0.05);
     EXPECT_EQ(world.collisionCount, 1);
+}
+
+// An elastic ball between two elastic walls 10 m apart, in zero gravity, as fast as the range
+// warning allows (docs/scene-format.md, "Ranges the engine is tested for": a body that crosses
+// the whole scene in one solver step is warned about). Up to that speed it bounces back and forth
+// many times in 0.1 s and keeps its speed exactly; a hair faster, the warning comes.
+TEST_P(AnyStep, ElasticBallBetweenWallsKeepsItsSpeedUpToTheSpeedWarning)
+{
+    model::World world = makeEmptyWorld(IntegratorKind::SemiImplicitEuler, h());
+    world.bodies.push_back(withMaterial(makeGround("left", 0.2, 4.0, Vec2(-5.1, 2.0)), 1.0, 0.0));
+    world.bodies.push_back(withMaterial(makeGround("right", 0.2, 4.0, Vec2(5.1, 2.0)), 1.0, 0.0));
+    world.bodies.push_back(withMaterial(makeBall("ball", 0.1, 0.1, Vec2(0, 0), Vec2(1, 0)), 1.0, 0.0));
+    // The speed at which the ball crosses the scene's extent in one solver step, from the warning.
+    const auto warnedAt = [&world](Scalar speed) {
+        world.bodies[2].state.velocity = Vec2(speed, 0);
+        return !model::sceneWarnings(world).empty();
+    };
+    Scalar low = 1;
+    Scalar high = 1e6;
+    ASSERT_FALSE(warnedAt(low));
+    ASSERT_TRUE(warnedAt(high));
+    for (int i = 0; i < 60; ++i) {
+        const Scalar mid = std::sqrt(low * high);
+        (warnedAt(mid) ? high : low) = mid;
+    }
+    const Scalar limit = low;
+    EXPECT_TRUE(warnedAt(1.01 * limit));
+    ASSERT_FALSE(warnedAt(0.99 * limit));
+    // More than one crossing of the 10 m gap in each solver step of 1/240 s or less.
+    const Vec2 start = world.bodies[2].state.velocity;
+    EXPECT_GT(start.x() * std::min(h(), 1.0 / 240), 10.0) << "limit " << limit << " m/s";
+    Simulation simulation(settingsUnderTest());
+    runFor(world, simulation, 0.1);
+    const model::Body& ball = world.bodies[2];
+    EXPECT_NEAR(ball.state.velocity.norm(), start.norm(), 1e-9 * start.norm());
+    EXPECT_LT(std::abs(ball.state.position.x()), 5.0 - 0.1 + 1e-3);
+    EXPECT_NEAR(ball.state.position.y(), 0.0, 1e-9);
 }
 
 // ---- Joints ------------------------------------------------------------------------------------

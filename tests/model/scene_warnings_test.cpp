@@ -220,5 +220,56 @@ TEST(SceneWarnings, ASpringIsJudgedAtTheSubstepOfAWorldWithJoints)
     EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
 }
 
+// A body that crosses the whole scene in one solver step is named with its speed, the scene's
+// extent and the fastest speed that holds; a lone body has nothing to meet and is not.
+TEST(SceneWarnings, ABodyThatCrossesTheSceneInOneSolverStepIsNamed)
+{
+    World world;
+    world.settings.gravity = Vec2::Zero();
+    world.settings.timeStep = 1.0 / 60; // split into solver steps of 1/240 s
+    world.bodies = {box("wall", Vec2(-4.5, 0), 1, true), box("wall2", Vec2(4.5, 0), 1, true), box("fast", Vec2(0, 0), 1)};
+    // The scene is 10 m wide and 1 m tall (boxes of 1 m, bounding circles of √2/2 m): its extent is
+    // 9 + √2 m, crossed in 1/240 s at 240·(9 + √2) m/s.
+    const Scalar limit = 240 * (9 + std::sqrt(2.0));
+    world.bodies[2].state.velocity = Vec2(0.999 * limit, 0);
+    EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
+    world.bodies[2].state.velocity = Vec2(0, -1.001 * limit);
+    const std::vector<SceneProblem> warnings = sceneWarnings(world);
+    ASSERT_EQ(warnings.size(), 1u) << joined(warnings);
+    EXPECT_EQ(warnings[0].path, "bodies[2]");
+    EXPECT_NE(warnings[0].reason.find("'fast' moves at 2.5e+03 m/s, 10.4 m in one solver step of 4.17 ms, more "
+                                      "than the 10.4 m across the whole scene"),
+              std::string::npos)
+        << warnings[0].reason;
+    EXPECT_NE(warnings[0].reason.find("8 impacts per contact point"), std::string::npos) << warnings[0].reason;
+    EXPECT_NE(warnings[0].reason.find("keep its speed at most 2.5e+03 m/s at this step"), std::string::npos)
+        << warnings[0].reason;
+    // A fixed body's velocity moves nothing, and a body alone has nothing to meet.
+    world.bodies[2].fixed = true;
+    EXPECT_TRUE(sceneWarnings(world).empty()) << joined(sceneWarnings(world));
+    World alone;
+    alone.settings.gravity = Vec2::Zero();
+    alone.bodies = {box("fast", Vec2(0, 0), 1)};
+    alone.bodies[0].state.velocity = Vec2(1e9, 0);
+    EXPECT_TRUE(sceneWarnings(alone).empty()) << joined(sceneWarnings(alone));
+}
+
+// More than five fast bodies: five are named, the rest counted.
+TEST(SceneWarnings, ManyFastBodiesAreNamedFiveAndCounted)
+{
+    World world;
+    world.settings.gravity = Vec2::Zero();
+    const char* const names[] = {"b0", "b1", "b2", "b3", "b4", "b5", "b6", "b7"};
+    for (int i = 0; i < 8; ++i) {
+        world.bodies.push_back(box(names[i], Vec2(2 * i, 0), 1));
+        world.bodies.back().state.velocity = Vec2(1e6, 0);
+    }
+    const std::vector<SceneProblem> warnings = sceneWarnings(world);
+    ASSERT_EQ(warnings.size(), 6u) << joined(warnings);
+    EXPECT_EQ(warnings[4].path, "bodies[4]");
+    EXPECT_EQ(warnings[5].path, "bodies");
+    EXPECT_EQ(warnings[5].reason, "and 3 more bodies that cross the whole scene in one solver step");
+}
+
 } // namespace
 } // namespace impetus::model
