@@ -304,18 +304,33 @@ void CanvasInstruments::followBodies()
     std::unordered_map<std::string, std::uint32_t> indexOf;
     for (std::uint32_t i = 0; i < world.bodies.size(); ++i)
         indexOf.emplace(world.bodies[i].name, i);
-    // A rename: the same number of bodies, and at some index a name that is gone where one that
-    // was not there before stands. That body keeps its paths (an edit of its name in the pane is
-    // no reason to lose them).
-    const bool sameCount = m_bodyNames.size() == world.bodies.size();
+    // A rename: as many bodies as before, each with the same kind of shape at its index, all but
+    // one under the same name, and that one's new name not there before. That body keeps its paths
+    // (an edit of its name in the pane is no reason to lose them). Otherwise a new name is a new
+    // body: a Reset that brings back a deleted wheel where a box was drawn since must not hand it
+    // the box's trail.
     const std::unordered_set<std::string> oldNames(m_bodyNames.begin(), m_bodyNames.end());
+    std::optional<std::size_t> renamed;
+    if (m_bodyNames.size() == world.bodies.size() && m_bodyShapeKinds.size() == world.bodies.size()) {
+        std::size_t changed = 0;
+        bool sameShapes = true;
+        for (std::size_t i = 0; i < m_bodyNames.size(); ++i) {
+            sameShapes = sameShapes && m_bodyShapeKinds[i] == world.bodies[i].shape.index();
+            if (m_bodyNames[i] != world.bodies[i].name) {
+                ++changed;
+                renamed = i;
+            }
+        }
+        if (changed != 1 || !sameShapes || oldNames.contains(world.bodies[*renamed].name))
+            renamed.reset();
+    }
     const auto newIndex = [&](std::size_t oldIndex) -> std::optional<std::uint32_t> {
         if (oldIndex >= m_bodyNames.size())
             return std::nullopt;
         const auto it = indexOf.find(m_bodyNames[oldIndex]);
         if (it != indexOf.end())
             return it->second;
-        if (sameCount && !oldNames.contains(world.bodies[oldIndex].name))
+        if (renamed == oldIndex)
             return static_cast<std::uint32_t>(oldIndex);
         return std::nullopt;
     };
@@ -340,8 +355,11 @@ void CanvasInstruments::followBodies()
         return !to;
     });
     m_bodyNames.clear();
-    for (const model::Body& body : world.bodies)
+    m_bodyShapeKinds.clear();
+    for (const model::Body& body : world.bodies) {
         m_bodyNames.push_back(body.name);
+        m_bodyShapeKinds.push_back(body.shape.index());
+    }
     if (traced && m_traced.empty() && !m_trails)
         emit samplingChanged();
 }

@@ -222,6 +222,9 @@ private:
     std::vector<TracedPoint> m_traced;
     /// The names of the world's bodies, in order, as m_trailPoints and m_traced index them.
     std::vector<std::string> m_bodyNames;
+    /// The kinds of the bodies' shapes (circle, ellipse, box, polygon: the variant's index) when
+    /// m_bodyNames was taken: a body renamed keeps its kind.
+    std::vector<std::size_t> m_bodyShapeKinds;
 };
 
 } // namespace impetus::view

@@ -138,6 +138,7 @@ private slots:
     void tracePointDrawsACycloid();
     void pathsStayWithTheirBodiesWhenABodyIsDeletedOrBack();
     void pathsStayWithABodyRenamedInThePane();
+    void aBodyDrawnInADeletedOnesPlaceGetsNoOtherPathsOnReset();
     void toolsAndRunControlsHaveIconsAndShortcutTips();
 
 private:
@@ -1035,6 +1036,52 @@ void InstrumentsTest::pathsStayWithABodyRenamedInThePane()
     QCOMPARE(window.runner().world().bodies[1].name, std::string("wheel"));
     QCOMPARE(instruments.trail(1).size(), std::size_t{37});
     QCOMPARE(instruments.tracedPoints().size(), std::size_t{1});
+}
+
+// The wheel is deleted and a box drawn in its place (the last index), then Reset brings the wheel
+// back where the box was: one name changed at one index, as in a rename, but another kind of body
+// stands there. The wheel starts a fresh trail; it does not take over the box's.
+void InstrumentsTest::aBodyDrawnInADeletedOnesPlaceGetsNoOtherPathsOnReset()
+{
+    MainWindow window;
+    window.setScene(blockAndWheelWorld(0), QStringLiteral("wheel"));
+    QVERIFY(showActive(window));
+    impetus::view::CanvasView& canvas = window.canvas();
+    QWidget* viewport = canvas.viewport();
+    CanvasInstruments& instruments = canvas.instruments();
+    window.trailsAction()->trigger();
+    // Play and pause at once: Reset comes back to here.
+    window.playAction()->trigger();
+    window.playAction()->trigger();
+    QVERIFY(!window.runner().isRunning());
+    const std::size_t before = instruments.trail(1).size();
+    window.runner().stepBy(24);
+    QCOMPARE(instruments.trail(1).size(), before + 24);
+
+    QTest::keyClick(viewport, Qt::Key_S);
+    const impetus::Vec2 wheelNow = window.runner().world().bodies[1].state.position;
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(wheelNow.x(), wheelNow.y())).toPoint());
+    QTest::keyClick(&canvas, Qt::Key_Delete);
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t{1});
+    QTest::keyClick(&canvas, Qt::Key_B);
+    const QPoint from = canvas.toView(QPointF(0.5, 2.5)).toPoint();
+    const QPoint to = canvas.toView(QPointF(1.5, 1.5)).toPoint();
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    QTest::mouseMove(viewport, (from + to) / 2);
+    QTest::mouseMove(viewport, to);
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, to);
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t{2});
+    QVERIFY(window.runner().world().bodies[1].name != "wheel");
+    window.runner().stepBy(12);
+    QCOMPARE(instruments.trail(1).size(), std::size_t{13});
+
+    window.resetAction()->trigger();
+    QCOMPARE(window.runner().world().bodies.size(), std::size_t{2});
+    QCOMPARE(window.runner().world().bodies[1].name, std::string("wheel"));
+    QCOMPARE(window.runner().world().bodies[1].state.position, impetus::Vec2(2, 0));
+    // A fresh trail where the wheel stands, not the box's 13 points from (1, 2).
+    QCOMPARE(instruments.trail(1).size(), std::size_t{1});
+    QCOMPARE(instruments.trail(1).front().position, QPointF(2, 0));
 }
 
 void InstrumentsTest::toolsAndRunControlsHaveIconsAndShortcutTips()
