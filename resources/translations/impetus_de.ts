@@ -1289,6 +1289,10 @@
         <source>Locked by the lesson: this joint can&apos;t be changed.</source>
         <translation>Von der Lektion gesperrt: dieses Gelenk lässt sich nicht ändern.</translation>
     </message>
+    <message>
+        <source>hinge</source>
+        <translation>Drehpunkt</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonText</name>

@@ -1289,6 +1289,10 @@
         <source>Locked by the lesson: this joint can&apos;t be changed.</source>
         <translation>Bloqueado por la lección: esta unión no se puede cambiar.</translation>
     </message>
+    <message>
+        <source>hinge</source>
+        <translation>bisagra</translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::LessonText</name>

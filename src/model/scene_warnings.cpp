@@ -42,6 +42,21 @@ Scalar solverStep(Scalar timeStep)
     return timeStep / substeps;
 }
 
+/// `value` and `bound` to kShownDigits significant digits, or to as many more as it takes for the
+/// two to read differently (a value just past its bound must not read as equal to it).
+std::pair<std::string, std::string> shownApart(Scalar value, Scalar bound)
+{
+    for (int digits = kShownDigits; digits < std::numeric_limits<Scalar>::max_digits10; ++digits) {
+        std::ostringstream a;
+        std::ostringstream b;
+        a << std::setprecision(digits) << value;
+        b << std::setprecision(digits) << bound;
+        if (a.str() != b.str())
+            return {a.str(), b.str()};
+    }
+    return {shown(value), shown(bound)};
+}
+
 /// A length as a person reads it: in mm below a metre, in m from a metre up.
 std::string shownLength(Scalar metres)
 {
@@ -212,14 +227,16 @@ void checkSpeeds(const World& world, std::vector<SceneProblem>& out)
             continue;
         }
         ++reported;
+        const auto [speedText, fastestText] = shownApart(speed, fastest);
+        const auto [travelText, acrossText] = shownApart(speed * h, across);
         out.push_back({"bodies[" + std::to_string(i) + "]",
-                       "'" + body.name + "' moves at " + shown(speed) + " m/s, " + shownLength(speed * h) +
-                           " in one solver step of " + shown(h * kMillisecondsPerSecond) + " ms, more than the " +
-                           shownLength(across) + " across the whole scene: it may meet the same bodies more often in "
-                           "one step than the " + std::to_string(constants::kMaxImpactsPerPoint) +
+                       "'" + body.name + "' moves at " + speedText + " m/s, " + travelText + " m in one solver step of " +
+                           shown(h * kMillisecondsPerSecond) + " ms, more than the " + acrossText +
+                           " m across the whole scene: it may meet the same bodies more often in one step than the " +
+                           std::to_string(constants::kMaxImpactsPerPoint) +
                            " impacts per contact point the solver resolves, and the contact forces that take the "
                            "rest do not keep restitution (it loses energy); keep its speed at most " +
-                           shown(fastest) + " m/s at this step, or make the step smaller"});
+                           fastestText + " m/s at this step, or make the step smaller"});
     }
     if (more > 0) {
         out.push_back({"bodies", "and " + std::to_string(more) + " more bodies that cross the whole scene in one "

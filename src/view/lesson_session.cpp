@@ -98,11 +98,20 @@ std::optional<QString> LessonSession::refusal(const model::WorldSettings& before
                      [&](model::WorldAttribute attribute) { return worldLock(attribute); });
 }
 
+bool LessonSession::isPin(int joint) const
+{
+    const model::World& world = m_document.world();
+    return joint >= 0 && static_cast<std::size_t>(joint) < world.joints.size() &&
+           world.joints[static_cast<std::size_t>(joint)].type == model::JointType::Pin;
+}
+
 std::optional<QString> LessonSession::jointLock(int joint, model::JointAttribute attribute) const
 {
     if (!locksInForce() || (joint >= 0 && lesson()->allows(static_cast<std::size_t>(joint), attribute)))
         return std::nullopt;
-    return tr("Locked by the lesson: the %1 of joint %2 can't be changed.").arg(attributeTitle(attribute)).arg(joint);
+    // A pin's anchors are its hinge, as its page calls them.
+    const QString what = isPin(joint) ? tr("hinge") : attributeTitle(attribute);
+    return tr("Locked by the lesson: the %1 of joint %2 can't be changed.").arg(what).arg(joint);
 }
 
 std::optional<QString> LessonSession::refusal(int joint, const model::Joint& before, const model::Joint& after) const
@@ -145,7 +154,7 @@ std::optional<QString> LessonSession::jointNote(int joint) const
     const model::JointAttributes editable = lesson()->editableJoint(static_cast<std::size_t>(joint));
     if (editable.none())
         return tr("Locked by the lesson: this joint can't be changed.");
-    return tr("Locked by the lesson. You may change its %1.").arg(jointAttributeList(editable));
+    return tr("Locked by the lesson. You may change its %1.").arg(isPin(joint) ? tr("hinge") : jointAttributeList(editable));
 }
 
 std::optional<QString> LessonSession::poseLock(const std::vector<int>& bodies, bool moves, bool turns) const

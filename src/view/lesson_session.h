@@ -89,6 +89,8 @@ signals:
 private:
     void onWorldChanged();
     QString bodyName(int body) const;
+    /// True when joint `joint` of the document's world is a pin (its anchors are its hinge).
+    bool isPin(int joint) const;
 
     SceneDocument& m_document;
     bool m_editing = false;

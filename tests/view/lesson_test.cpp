@@ -569,13 +569,24 @@ void LessonTest::editLetsStudentsMoveOneJointsAnchors()
     QCOMPARE(m_window->runner().world().joints[0].length, 2.5);
     QCOMPARE(m_window->document().undoStack()->count(), before + 1);
 
-    // The pin is still locked whole.
+    // The pin is still locked whole, and an edit of its hinge that reached the lesson would be
+    // refused with a reason that calls it what its page does.
     m_window->document().setSelection(Selection{{}, {}, {1}});
     auto* hingeX = pane->findChild<QLineEdit*>(QStringLiteral("pinAnchorX"));
     QVERIFY(hingeX && hingeX->isReadOnly());
     QCOMPARE(pane->lockNote(), QStringLiteral("Locked by the lesson: this joint can't be changed."));
     typeInto(hingeX, QStringLiteral("0"));
     QCOMPARE(m_window->runner().world().joints[1].worldAnchor, Vec2(-1, 0.9));
+    model::Joint movedPin = m_window->runner().world().joints[1];
+    movedPin.worldAnchor = Vec2(0, 0.9);
+    QCOMPARE(m_window->lesson().refusal(1, m_window->runner().world().joints[1], movedPin),
+             std::optional<QString>(QStringLiteral("Locked by the lesson: the hinge of joint 1 can't be changed.")));
+    model::Joint retyped = m_window->runner().world().joints[0];
+    retyped.type = model::JointType::Pin;
+    QCOMPARE(m_window->lesson().refusal(0, m_window->runner().world().joints[0], retyped),
+             std::optional<QString>(QStringLiteral("Locked by the lesson: joint 0 can't be changed to another type or to other bodies.")));
+    QCOMPARE(m_window->lesson().refusal(0, m_window->runner().world().joints[0], m_window->runner().world().joints[0]),
+             std::optional<QString>());
 
     // The teacher deletes the ball: its rod goes, and so does the rod's entry; the pin is joint 0.
     editAction()->trigger();
