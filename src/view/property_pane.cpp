@@ -1102,18 +1102,23 @@ void PropertyPane::load(const model::World& world, bool following)
         }
     }
     if (m_page == Page::World) {
-        QStringList lines;
-        std::vector<model::SceneProblem> warnings = model::sceneWarnings(world);
+        // The ranges are judged when the page is shown or the world edited, and held while a run
+        // goes on, as a spring's page holds its spring's: judged at every step's poses and speeds
+        // (bodies that come to touch, a spring's tension, a body's speed) they came and went.
+        if (!following || shownPage != Page::World) {
+            m_rangeWarnings.clear();
+            for (const model::SceneProblem& warning : model::sceneWarnings(world))
+                m_rangeWarnings << tr("Warning: %1").arg(QString::fromStdString(warning.toString()));
+        }
+        QStringList lines = m_rangeWarnings;
         // A run that adds energy where nothing does work (issue 17, F2): judged against the
-        // energy the world had at step 0.
+        // energy the world had at step 0, at every step.
         const controller::Energy energy = controller::computeEnergy(world);
         if (world.stepCount == 0)
             m_energyBaseline = model::energyBaseline(world, energy.total(), energy.kinetic, energy.potential);
         else if (const auto grown = model::energyGrowthWarning(m_energyBaseline, energy.total(), world.time,
                                                                 world.settings.integrator))
-            warnings.push_back(*grown);
-        for (const model::SceneProblem& warning : warnings)
-            lines << tr("Warning: %1").arg(QString::fromStdString(warning.toString()));
+            lines << tr("Warning: %1").arg(QString::fromStdString(grown->toString()));
         m_worldWarningText = lines.join(QLatin1Char('\n'));
     }
 }

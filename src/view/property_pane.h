@@ -9,6 +9,7 @@
 #include "view/selection.h"
 
 #include <QLocale>
+#include <QStringList>
 #include <QString>
 #include <QWidget>
 
@@ -200,6 +201,7 @@ private:
     QString m_softDensityShown; ///< the text last put in the ellipses-per-m² field
     QString m_softGridText; ///< the shown soft body's ellipse count and density, or empty
     QString m_worldWarningText; ///< settings outside the tested ranges (model::sceneWarnings), or empty
+    QStringList m_rangeWarnings; ///< the world's range warnings as last judged (load), one line each
     QString m_springWarningText; ///< the shown spring's own warnings (too stiff for the step), or empty
     model::EnergyBaseline m_energyBaseline; ///< the world's energy at step 0, to warn when a run adds energy
     QLocale m_locale; ///< the user's locale, without group separators

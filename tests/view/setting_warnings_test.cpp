@@ -237,6 +237,26 @@ void SettingWarningsTest::springWarningHoldsStillWhileTheRunGoesOn()
     typeAndEnter(damping, QStringLiteral("0.001"));
     QCOMPARE(window.runner().world().springs[0].damping, 0.001);
     QCOMPARE(warnings->isVisible(), impetus::model::springWarning(window.runner().world(), 0).has_value());
+
+    // The world page, which lists the spring's warning too, holds still in the same way: judged
+    // when it is shown, here at the bar's present pose.
+    window.document().setSelection(impetus::view::Selection{});
+    auto* worldWarnings = pane->findChild<QLabel*>(QStringLiteral("worldWarnings"));
+    QVERIFY(worldWarnings);
+    // (Its line on the spring, "springs[0]: …"; a line on the run's energy may come and go.)
+    const auto springLine = [worldWarnings] {
+        return worldWarnings->isVisible() && worldWarnings->text().contains(QStringLiteral("springs[0]: "));
+    };
+    const bool shown = springLine();
+    QCOMPARE(shown, impetus::model::springWarning(window.runner().world(), 0).has_value());
+    int changes = 0;
+    for (int step = 0; step < 12; ++step) {
+        const bool before = impetus::model::springWarning(window.runner().world(), 0).has_value();
+        window.runner().stepBy(1);
+        changes += impetus::model::springWarning(window.runner().world(), 0).has_value() != before ? 1 : 0;
+        QCOMPARE(springLine(), shown);
+    }
+    QVERIFY(changes > 0);
 }
 
 #include "setting_warnings_test.moc"
