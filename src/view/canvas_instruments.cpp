@@ -334,6 +334,15 @@ void CanvasInstruments::followBodies()
             return static_cast<std::uint32_t>(oldIndex);
         return std::nullopt;
     };
+    // A renamed body keeps the arrows it asked for, which are kept by name.
+    if (renamed) {
+        const auto shown = m_bodyShown.find(m_bodyNames[*renamed]);
+        if (shown != m_bodyShown.end()) {
+            const std::array<bool, kVectorKindCount> kinds = shown->second;
+            m_bodyShown.erase(shown);
+            m_bodyShown[world.bodies[*renamed].name] = kinds;
+        }
+    }
     if (m_trails) {
         std::vector<std::deque<TrailPoint>> moved(world.bodies.size());
         for (std::size_t i = 0; i < m_trailPoints.size(); ++i) {
@@ -433,8 +442,8 @@ void CanvasInstruments::discardAfter(std::int64_t step)
 void CanvasInstruments::refresh()
 {
     const model::World& world = m_runner.world();
-    if (m_trails || !m_traced.empty())
-        followBodies(); // a body came or went: the others keep their paths at their new indices
+    if (m_trails || !m_traced.empty() || !m_bodyShown.empty())
+        followBodies(); // a body came, went or was renamed: the others keep their paths and arrows
     const bool forces = drawsKindAnywhere(VectorKind::Acceleration) || drawsKindAnywhere(VectorKind::NetForce) ||
                         drawsKindAnywhere(VectorKind::ForceParts);
     if (forces)

@@ -1011,6 +1011,11 @@ void InstrumentsTest::pathsStayWithABodyRenamedInThePane()
     const impetus::Vec2 wheelNow = window.runner().world().bodies[1].state.position;
     QTest::mouseClick(viewport, Qt::LeftButton, {}, canvas.toView(QPointF(wheelNow.x(), wheelNow.y())).toPoint());
     QCOMPARE(window.document().selection(), (impetus::view::Selection{{1}, {}, {}}));
+    // The wheel's own velocity arrow, ticked in the pane (kept by name).
+    auto* velocity = window.propertyPane()->findChild<QCheckBox*>(QStringLiteral("bodyVelocityVectors"));
+    QVERIFY(velocity);
+    velocity->click();
+    QVERIFY(instruments.showsBodyVector("wheel", VectorKind::Velocity));
     auto* name = window.propertyPane()->findChild<QLineEdit*>(QStringLiteral("name"));
     QVERIFY(name);
     name->setFocus();
@@ -1018,6 +1023,10 @@ void InstrumentsTest::pathsStayWithABodyRenamedInThePane()
     QTest::keyClicks(name, QStringLiteral("disc"));
     QTest::keyClick(name, Qt::Key_Return);
     QCOMPARE(window.runner().world().bodies[1].name, std::string("disc"));
+    // Its arrow stays, under its new name, and its box in the pane stays ticked.
+    QVERIFY(instruments.showsBodyVector("disc", VectorKind::Velocity));
+    QVERIFY(!instruments.showsBodyVector("wheel", VectorKind::Velocity));
+    QTRY_VERIFY(velocity->isChecked());
 
     // Its trail and traced point are still there, from the same start, and grow on; the block's
     // trail is untouched.
