@@ -273,8 +273,11 @@ def pendulum_tuning():
         low, high = (mid, high) if period(mid) < 2.0 else (low, mid)
     seconds_length = (low + high) / 2
     quarter = start_length / 4
+    # A beam whose underside holds the pivot, so that the view frames it (the pivot is a point of
+    # the world, which moves down from under the beam with the student's edits).
     bodies = [
         fixed("floor", box(6, 0.2), (0.0, -0.1)),
+        fixed("beam", box(2.0, 0.15), (0.0, pivot[1] + 0.075), STRUCTURE_COLOR),
         body("bob", circle(0.15), bob, PALETTE[4], mass=1.0),
     ]
     joints = [{"type": "rod", "bodyA": "bob", "anchorA": [0, 0], "bodyB": None, "anchorB": vec(*pivot)}]
