@@ -184,6 +184,15 @@ std::optional<model::SpringAttribute> springAttributeOf(const QString& name)
     return std::nullopt;
 }
 
+/// The joint attribute a joint page field edits, from its object name: every field of a joint
+/// that can be typed in is one of its anchors (a pin's hinge, a rod's ends).
+std::optional<model::JointAttribute> jointAttributeOf(const QString& name)
+{
+    if (name.startsWith(QLatin1String("pinAnchor")) || name.startsWith(QLatin1String("rodAnchor")))
+        return model::JointAttribute::Anchors;
+    return std::nullopt;
+}
+
 } // namespace
 
 /// One numeric line edit bound to one model value.
@@ -1196,11 +1205,8 @@ bool PropertyPane::locked(const QWidget* field) const
         return attribute ? m_lesson->springLock(m_index, *attribute).has_value() : m_lesson->locksInForce();
     }
     case Page::Joint: {
-        // Every field of a joint that can be typed in is one of its anchors.
-        const bool anchor = field->objectName().startsWith(QLatin1String("pinAnchor")) ||
-                            field->objectName().startsWith(QLatin1String("rodAnchor"));
-        return anchor ? m_lesson->jointLock(m_index, model::JointAttribute::Anchors).has_value()
-                      : m_lesson->locksInForce();
+        const std::optional<model::JointAttribute> attribute = jointAttributeOf(field->objectName());
+        return attribute ? m_lesson->jointLock(m_index, *attribute).has_value() : m_lesson->locksInForce();
     }
     }
     return m_lesson->locksInForce();
