@@ -929,6 +929,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
             m_endStates[i].angularVelocity = m_bodies[i].angularVelocity; // and IslandSpin spin it
         }
     });
+    // What the solve could not hold: no centre passes into a fixed body (fixed_body_guard.h).
+    m_profile.guardedCentres += m_fixedBodyGuard.keepOut(world, m_startStates, m_endStates);
     m_profile.positionMs += millisecondsSince(positionStart);
     scatterStates(world, m_endStates, bodyTasks(world));
     updateSoftOwners(world);

@@ -3,6 +3,7 @@
 /// The fixed-step driver. Simulation::step reads top to bottom as the phases it runs.
 
 #include "controller/collision/broad_phase.h"
+#include "controller/collision/fixed_body_guard.h"
 #include "controller/collision_events.h"
 #include "controller/collision/colliders.h"
 #include "controller/dynamics/contact_solver.h"
@@ -50,6 +51,10 @@ struct StepProfile {
     /// nearly however many substeps it takes; one per substep where bodies move fast or with soft
     /// bodies (Simulation::step).
     int collisionPasses = 0;
+    /// Centres of moving bodies or soft ellipses that the fixed-body guard put back where their
+    /// path entered a fixed body (FixedBodyGuard), summed over the substeps: 0 wherever the contact
+    /// solve holds.
+    int guardedCentres = 0;
 };
 
 /// Iteration counts of the constraint solvers.
@@ -253,6 +258,7 @@ private:
     ContactSolver m_contactSolver;
     JointSolver m_jointSolver;
     UnlikeMassIslands m_unlikeMasses;
+    FixedBodyGuard m_fixedBodyGuard; ///< the last line against passing into a fixed body
     IslandSpin m_islandSpin; ///< closed islands' angular momentum in zero gravity (island_spin.h)
     std::vector<CollisionEvent> m_events;
     std::vector<model::ContactRecord> m_previousContacts;

@@ -104,6 +104,12 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // on stiff springs to a pinned circle and a polygon (RK4, sideways gravity, 1/240 s), following
 // its grid's turn, fitted afresh each pass, was flung out of the box at 7.3 s; a soft body's rod
 // keeps the first turn's arc.
+// 2087, 2146, 4062, 6118, 6715, 6738, 8187, 8336, 9217 and 9742 (light bodies, or a soft body's
+// ellipses, driven into a wall by joints to far heavier bodies; described below as they were
+// found) by the fixed-body guard (collision/fixed_body_guard.h): a centre whose path in a substep
+// enters a fixed body is put back where it entered, as Box2D v3 sweeps a shape's centroid against
+// static shapes. It stops the escape, not the solve's failure: those bodies still end a substep
+// half in the wall where the passes cannot hold them (FixedBodyGuard tests, docs/physics.md).
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "31", "49", "51", "61",
                                            "65", "66", "68", "69", "86", "87", "92", "111", "117", "121", "131",
@@ -114,7 +120,8 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                                            "520", "1352", "1489", "2026", "2833", "2840", "2932", "3937",
                                            "4386", "5812", "104-g2", "111-g2", "131-g2", "1210", "3446", "3785",
                                            "4458", "4870", "6097", "6257", "6327", "7042", "5292",
-                                           "8426", "104", "140", "177"),
+                                           "8426", "104", "140", "177", "2087", "2146", "4062", "6118", "6715",
+                                           "6738", "8187", "8336", "9217", "9742"),
                          seedName);
 
 // Fixed, the earlier generators' 104, 140 and 177 (in the list above since 2026-11-29): they were
@@ -134,9 +141,8 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
 // Tunnelling.FastSpinningEllipseBouncesOffAWall); it then failed at 1.04 s on a soft body
 // driven to hundreds of m/s under explicit Euler, which the grids' kept angular momentum fixed.
 
-// Open, beyond the 200 seeds that ctest runs (docs/testing.md, "Beyond the 200"), 2087, 2146,
-// 4062, 4961, 6118, 6715, 6738, 8187, 8336, 9217 and 9742 (the others told of here are fixed,
-// above): of the six findings of seeds 201 to 400, 201, 239, 264, 306 and 335 are fixed (above),
+// Open, beyond the 200 seeds that ctest runs (docs/testing.md, "Beyond the 200"): 4961 (the
+// others told of here are fixed, above): of the six findings of seeds 201 to 400, 201, 239, 264, 306 and 335 are fixed (above),
 // and so are 331, 417, 520, 1352, 1437, 1489, 1995, 2026, 2163, 2323, 2429, 2468, 2638, 2822, 2833, 2840, 2932,
 // 3937 and 4386 of those below, which tell each one as it was found. 331: a light
 // ellipse squeezed into a wall by a heavy body dragged along by a pin. From the long run of seeds
@@ -223,8 +229,7 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
 // with the warm start kept, which 1210, 1352, 4458, 4870, 6097 and 6327 need gone (halved, 1210
 // and 2932 fail).
 INSTANTIATE_TEST_SUITE_P(DISABLED_SoakFindingsBeyond200, SoakFinding,
-                         ::testing::Values("2087", "2146", "4062", "4961", "6118", "6715", "6738", "8187", "8336",
-                                           "9217", "9742"),
+                         ::testing::Values("4961"),
                          seedName);
 
 } // namespace
