@@ -2005,6 +2005,17 @@
         <source>Click a point on a body to draw the path it takes (a wheel&apos;s rim: a cycloid); click it again, or Esc, to stop</source>
         <translation>Klicken Sie auf einen Punkt eines Körpers, um seine Bahn zu zeichnen (am Rand eines Rades: eine Zykloide); erneut klicken oder Esc beendet es</translation>
     </message>
+    <message>
+        <source>At t = %1 s the solver let the centre of “%2” into “%3”; it was put back at the surface.</source>
+        <translation>Bei t = %1 s hat die Simulation den Mittelpunkt von „%2“ in „%3“ eindringen lassen; er wurde an die Oberfläche zurückgesetzt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more such body pair(s) in the same steps.</source>
+        <translation>
+            <numerusform>%n weiteres solches Körperpaar in denselben Schritten.</numerusform>
+            <numerusform>%n weitere solche Körperpaare in denselben Schritten.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>

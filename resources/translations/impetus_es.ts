@@ -2005,6 +2005,17 @@
         <source>Click a point on a body to draw the path it takes (a wheel&apos;s rim: a cycloid); click it again, or Esc, to stop</source>
         <translation>Haga clic en un punto de un cuerpo para dibujar su trayectoria (en el borde de una rueda: una cicloide); otro clic o Esc la detiene</translation>
     </message>
+    <message>
+        <source>At t = %1 s the solver let the centre of “%2” into “%3”; it was put back at the surface.</source>
+        <translation>En t = %1 s la simulación dejó entrar el centro de «%2» en «%3»; se devolvió a la superficie.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more such body pair(s) in the same steps.</source>
+        <translation>
+            <numerusform>%n par de cuerpos más así en los mismos pasos.</numerusform>
+            <numerusform>%n pares de cuerpos más así en los mismos pasos.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>impetus::view::PaceIndicator</name>

@@ -931,6 +931,10 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     });
     // What the solve could not hold: no centre passes into a fixed body (fixed_body_guard.h).
     m_profile.guardedCentres += m_fixedBodyGuard.keepOut(world, m_startStates, m_endStates);
+    for (const KeptOut& kept : m_fixedBodyGuard.keptOut()) {
+        if (std::find(m_keptOut.begin(), m_keptOut.end(), kept) == m_keptOut.end())
+            m_keptOut.push_back(kept);
+    }
     m_profile.positionMs += millisecondsSince(positionStart);
     scatterStates(world, m_endStates, bodyTasks(world));
     updateSoftOwners(world);
@@ -963,6 +967,7 @@ void Simulation::step(model::World& world)
     m_stability = softStability(world);
     m_profile = StepProfile{};
     m_events.clear();
+    m_keptOut.clear();
 
     const Scalar h = world.settings.timeStep;
     bool collided = false;

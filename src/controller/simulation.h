@@ -127,6 +127,11 @@ public:
     /// The contacts that began in the last step (the collision log's new entries).
     const std::vector<CollisionEvent>& events() const { return m_events; }
 
+    /// The bodies the fixed-body guard put back in the last step (fixed_body_guard.h), once per
+    /// pair of body and fixed body, in the order the substeps met them: empty wherever the contact
+    /// solve held. The app tells of them, as the solve failed there.
+    const std::vector<KeptOut>& keptOut() const { return m_keptOut; }
+
     /// Appends a record of every impact from the next step on to `log` (impact_record.h), or
     /// stops recording (nullptr, the default). The caller keeps `log` alive.
     void setImpactLog(std::vector<ImpactRecord>* log) { m_contactSolver.setImpactLog(log); }
@@ -261,6 +266,7 @@ private:
     FixedBodyGuard m_fixedBodyGuard; ///< the last line against passing into a fixed body
     IslandSpin m_islandSpin; ///< closed islands' angular momentum in zero gravity (island_spin.h)
     std::vector<CollisionEvent> m_events;
+    std::vector<KeptOut> m_keptOut; ///< see keptOut()
     std::vector<model::ContactRecord> m_previousContacts;
     CollisionScratch m_collisionScratch;
     EnergyLedger* m_ledger = nullptr; ///< see setLedger

@@ -62,6 +62,10 @@ constexpr qsizetype kProblemsShown = 10;
 /// Entries of File > Open Recent: enough for a lesson's scenes, few enough to scan.
 constexpr qsizetype kMaxRecentFiles = 8;
 
+/// How long the status bar tells that the engine put a body back out of a wall, ms: long enough to
+/// read; a scene where it goes on happening renews it every frame.
+constexpr int kKeptOutMessageMs = 10000;
+
 /// The speeds of the run controls, simulated seconds per wall second.
 constexpr std::array<double, 7> kSpeeds = {0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 4.0};
 constexpr int kRealTimeSpeedIndex = 3;
@@ -110,6 +114,7 @@ MainWindow::MainWindow(QWidget* parent)
     SimulationRunner& runner = m_document->runner();
     connect(&runner, &SimulationRunner::runningChanged, this, &MainWindow::onRunningChanged);
     connect(&runner, &SimulationRunner::diverged, this, &MainWindow::showDivergence);
+    connect(&runner, &SimulationRunner::keptOut, this, &MainWindow::showKeptOut);
     connect(&runner, &SimulationRunner::computingStepChanged, this, &MainWindow::updateStepAction);
     connect(m_timeline, &Timeline::rangeChanged, this, &MainWindow::updateStepAction);
     connect(m_document, &SceneDocument::worldChanged, this, &MainWindow::updateStepAction);
@@ -773,6 +778,17 @@ void MainWindow::showDivergence(const QString& bodyName, double time)
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->setWindowModality(Qt::WindowModal);
     box->open();
+}
+
+void MainWindow::showKeptOut(const QString& bodyName, const QString& fixedName, double time, int others)
+{
+    // The run goes on, so a line in the status bar, not a box: a scene where it happens at every
+    // step (a soft body crushed into a wall) must not bury the window under boxes.
+    QString text = tr("At t = %1 s the solver let the centre of “%2” into “%3”; it was put back at the surface.")
+                       .arg(localeNumber(time, 'g', 6), bodyName, fixedName);
+    if (others > 0)
+        text += QLatin1Char(' ') + tr("%n more such body pair(s) in the same steps.", "", others);
+    statusBar()->showMessage(text, kKeptOutMessageMs);
 }
 
 bool MainWindow::saveTo(const QString& path)

@@ -200,6 +200,9 @@ private:
     void showProblems(const QString& path, const QStringList& problems);
     QMessageBox* makeProblemsBox(const QString& path, const QStringList& problems, const QString& outcome);
     void showDivergence(const QString& bodyName, double time);
+    /// Tells in the status bar that the engine put a body back out of a fixed body: the solve failed
+    /// to hold it there (SimulationRunner::keptOut).
+    void showKeptOut(const QString& bodyName, const QString& fixedName, double time, int others);
 
     SceneDocument* m_document;
     CanvasView* m_canvas;

@@ -283,6 +283,12 @@ std::int64_t SimulationRunner::collectBatch()
     m_pace.profile = outcome->profile;
     m_pace.stability = std::move(outcome->stability);
     m_world = std::move(outcome->world);
+    if (!outcome->keptOut.empty()) {
+        const controller::KeptOut& first = outcome->keptOut.front();
+        emit keptOut(QString::fromStdString(m_world.bodies[first.body].name),
+                     QString::fromStdString(m_world.bodies[first.fixedBody].name), outcome->firstKeptOutTime,
+                     static_cast<int>(outcome->keptOut.size()) - 1);
+    }
     if (!outcome->samples.empty())
         emit sampled(outcome->samples);
     emit stepped();

@@ -196,6 +196,12 @@ signals:
     /// motion. The runner has paused and kept the world from before that batch.
     void diverged(const QString& bodyName, double time);
 
+    /// A batch of steps about to be shown had the engine's fixed-body guard put body `bodyName`
+    /// back out of fixed body `fixedName` at simulated time `time` (s), and `others` more pairs
+    /// besides: the solve let a centre into a wall there (controller::FixedBodyGuard). Emitted
+    /// just before the batch's stepped().
+    void keptOut(const QString& bodyName, const QString& fixedName, double time, int others);
+
 private:
     /// What the batch in flight was for.
     enum class BatchKind : std::uint8_t { Run, Steps };

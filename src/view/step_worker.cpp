@@ -1,5 +1,7 @@
 #include "view/step_worker.h"
 
+#include <algorithm>
+
 #include "controller/diagnostics.h"
 #include "view/view_constants.h"
 
@@ -131,6 +133,12 @@ StepOutcome StepWorker::compute(StepBatch batch, const StepFunction& step)
         }
         step(m_simulation, batch.world);
         ++outcome.steps;
+        for (const controller::KeptOut& kept : m_simulation.keptOut()) {
+            if (outcome.keptOut.empty())
+                outcome.firstKeptOutTime = batch.world.time;
+            if (std::find(outcome.keptOut.begin(), outcome.keptOut.end(), kept) == outcome.keptOut.end())
+                outcome.keptOut.push_back(kept);
+        }
         if (!batch.sampling.empty()) {
             outcome.samples.push_back(takeSample(batch.world, batch.sampling));
             if (batch.sampling.ledger && m_ledger.started()) {

@@ -50,6 +50,10 @@ struct StepOutcome {
     controller::SoftStability stability; ///< Simulation::stability() after the last step taken
     /// controller::firstNonFiniteBody() of the world after the steps: the body that blew up.
     std::optional<std::size_t> nonFiniteBody;
+    /// The bodies the engine's fixed-body guard put back in the batch's steps (Simulation::keptOut),
+    /// once per pair of body and fixed body, and the simulated time of the step of the first, s.
+    std::vector<controller::KeptOut> keptOut;
+    double firstKeptOutTime = 0;
     /// One record per step taken, in order, when the batch's sampling asked for any.
     std::vector<StepSample> samples;
 };

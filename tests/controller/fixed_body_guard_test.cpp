@@ -48,7 +48,7 @@ TEST(PathEntry, IsTheFractionOfThePathWhereItReachesARoundShape)
 }
 
 // A 2 m × 1 m box: from (−3, 0.2) to (1, 0.2) enters its left face x = −1 half way; a path that
-// crosses it whole (a tunnel) enters it too; a path along its top face, y = 0.5, is not inside.
+// crosses it whole (a tunnel) enters it too; a path passing 0.1 m above its top face does not.
 TEST(PathEntry, IsWhereAPathCrossesABoxsFaceAndCatchesAPathThroughIt)
 {
     const model::Body box = fixedBody(model::Box{2, 1});
@@ -104,6 +104,7 @@ TEST(FixedBodyGuard, PutsACentreThatEnteredAWallBackAtTheFace)
     EXPECT_NEAR(end[1].angle, 1.0, 1e-5);
     EXPECT_EQ(end[1].velocity, Vec2(7, 1));
     EXPECT_EQ(end[0], start[0]); // the wall itself is never moved
+    EXPECT_EQ(guard.keptOut(), (std::vector<KeptOut>{{1, 0}}));
 }
 
 // A centre that stays outside, or that starts the substep inside (a ball drawn into the wall),
@@ -121,6 +122,27 @@ TEST(FixedBodyGuard, LeavesPathsThatDoNotEnterAlone)
     end[1].position = Vec2(3.6, 0);
     EXPECT_EQ(guard.keepOut(world, start, end), 0);
     EXPECT_EQ(end[1].position, Vec2(3.6, 0));
+    EXPECT_TRUE(guard.keptOut().empty());
+}
+
+// A number that is not finite is left to the step's own check, which names the body: the guard
+// neither puts back a body whose end is NaN nor puts anything back by a wall whose pose is NaN.
+TEST(FixedBodyGuard, LeavesNotANumberAloneAndSpreadsItNowhere)
+{
+    const model::World world = ballBeforeAWall();
+    const model::BodyState wall = world.bodies[0].state;
+    std::vector<model::BodyState> start{wall, world.bodies[1].state};
+    std::vector<model::BodyState> end = start;
+    end[1].position = Vec2(std::nan(""), 0);
+    end[1].angle = 0.5;
+    FixedBodyGuard guard;
+    EXPECT_EQ(guard.keepOut(world, start, end), 0);
+    EXPECT_TRUE(std::isnan(end[1].position.x()));
+    EXPECT_EQ(end[1].angle, 0.5);
+    end[1].position = Vec2(3.5, 0);
+    end[0].angle = std::nan("");
+    EXPECT_EQ(guard.keepOut(world, start, end), 0);
+    EXPECT_EQ(end[1].position, Vec2(3.5, 0));
 }
 
 // A fixed bar 4 m × 0.2 m that moves up 1.2 m in the substep, through a ball at rest 1 m above its
@@ -187,7 +209,7 @@ TEST(FixedBodyGuard, PutsASoftBodysEllipseBackAndNoOtherEllipse)
     ASSERT_EQ(world.softBodies.size(), 1u);
     std::vector<model::BodyState> start;
     gatherStates(world, start);
-    ASSERT_GT(start.size(), 4u);
+    ASSERT_GT(start.size(), 5u);
     std::vector<model::BodyState> end = start;
     const std::size_t pushed = 2 + 3; // the fourth ellipse
     end[pushed].position = Vec2(3.4, start[pushed].position.y());
@@ -195,6 +217,7 @@ TEST(FixedBodyGuard, PutsASoftBodysEllipseBackAndNoOtherEllipse)
     EXPECT_EQ(guard.keepOut(world, start, end), 1);
     EXPECT_NEAR(end[pushed].position.x(), 3.0, 1e-5);
     EXPECT_LT(end[pushed].position.x(), 3.0);
+    EXPECT_EQ(guard.keptOut(), (std::vector<KeptOut>{{1, 0}})); // told as the soft body
     for (std::size_t i = 0; i < end.size(); ++i) {
         if (i != pushed) {
             EXPECT_EQ(end[i], start[i]) << "entry " << i;

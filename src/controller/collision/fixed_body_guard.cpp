@@ -79,6 +79,10 @@ Scalar unitDiscEntry(const Vec2& from, const Vec2& d)
 /// them.
 constexpr std::size_t kFewFixedBodies = 16;
 
+/// A pose with finite numbers: a path with a NaN in it is no path (and the step's NaN check names
+/// the body; the guard must not hide it, nor spread it to the bodies it would put back).
+bool finite(const model::BodyState& state) { return state.position.allFinite() && std::isfinite(state.angle); }
+
 Aabb merged(const Aabb& a, const Aabb& b) { return Aabb{a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)}; }
 
 /// The box around a body's shape at pose `pose`, m.
@@ -158,14 +162,15 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
     const std::size_t bodyCount = world.bodies.size();
     for (std::size_t i = 0; i < bodyCount; ++i) {
         const model::Body& body = world.bodies[i];
-        if (!body.fixed)
-            continue;
+        if (!body.fixed || !finite(start[i]) || !finite(end[i]))
+            continue; // a fixed body with no place puts nothing back (NaN would spread)
         const Transform from = Transform::of(start[i]);
         const Transform to = Transform::of(end[i]);
         m_proxies.push_back(BroadPhaseProxy{merged(boxAt(body, from), boxAt(body, to)), static_cast<std::uint32_t>(i), false});
         m_fixedPoses.push_back({from, to});
     }
     const std::size_t fixedCount = m_proxies.size();
+    m_keptOut.clear();
     if (fixedCount == 0)
         return 0;
     // Each path's box is padded by its body's size, which the guard needs not but the broad
@@ -178,14 +183,16 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
     };
     for (std::size_t i = 0; i < bodyCount; ++i) {
         const model::Body& body = world.bodies[i];
-        if (!body.fixed && !body.soft)
+        if (!body.fixed && !body.soft && finite(start[i]) && finite(end[i]))
             m_proxies.push_back(BroadPhaseProxy{pathBox(i, body.geometry.boundingRadius), static_cast<std::uint32_t>(i), true});
     }
     std::size_t entry = bodyCount;
     for (const model::SoftGrid& grid : world.softBodies) {
         const Scalar pad = grid.semiAxes().maxCoeff();
-        for (std::size_t k = 0; k < grid.size(); ++k, ++entry)
-            m_proxies.push_back(BroadPhaseProxy{pathBox(entry, pad), static_cast<std::uint32_t>(entry), true});
+        for (std::size_t k = 0; k < grid.size(); ++k, ++entry) {
+            if (finite(start[entry]) && finite(end[entry]))
+                m_proxies.push_back(BroadPhaseProxy{pathBox(entry, pad), static_cast<std::uint32_t>(entry), true});
+        }
     }
 
     // Each entry's earliest entry into any fixed body; of two at once, the lower body's, so that
@@ -226,7 +233,20 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
     }
 
     // Each put back where its path enters, in the fixed body's frame at the substep's end.
+    std::sort(m_hits.begin(), m_hits.end(), [](const Hit& a, const Hit& b) { return a.entry < b.entry; });
+    m_keptOut.clear();
+    std::size_t grid = 0;
+    std::size_t gridEnd = bodyCount + (world.softBodies.empty() ? 0 : world.softBodies[0].size());
     for (const Hit& hit : m_hits) {
+        std::uint32_t body = hit.entry;
+        if (hit.entry >= bodyCount) {
+            while (hit.entry >= gridEnd)
+                gridEnd += world.softBodies[++grid].size();
+            body = world.softBodies[grid].body.index;
+        }
+        const KeptOut kept{body, m_proxies[hit.fixed].body};
+        if (std::find(m_keptOut.begin(), m_keptOut.end(), kept) == m_keptOut.end())
+            m_keptOut.push_back(kept);
         const Vec2 d = hit.to - hit.from;
         const Scalar back = std::min(hit.fraction, kBackOff / d.norm());
         const Scalar t = hit.fraction - back;

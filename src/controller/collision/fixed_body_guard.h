@@ -13,6 +13,13 @@
 
 namespace impetus::controller {
 
+/// A body the guard put back: its centre, or one of its soft body's ellipses, had entered a fixed body.
+struct KeptOut {
+    std::uint32_t body = 0; ///< the body put back (World::bodies index; a soft body for its ellipse)
+    std::uint32_t fixedBody = 0; ///< the fixed body it had entered (World::bodies index)
+    bool operator==(const KeptOut&) const = default; ///< memberwise equality
+};
+
 /// Keeps the centre of every dynamic body, and of every soft body's ellipse, out of the fixed
 /// bodies (docs/physics.md, "The fixed-body guard").
 ///
@@ -31,7 +38,9 @@ namespace impetus::controller {
 ///
 /// A centre that starts the substep inside a fixed piece is left alone (a body drawn into the
 /// ground), and so is every path that meets no fixed piece: in every scene the solve holds, the
-/// guard does nothing. It moves bodies only, so it can add no kinetic energy.
+/// guard does nothing. It moves bodies only, so it adds no kinetic energy; the height or a
+/// spring's stretch it changes the energy ledger books under position correction. A path with a
+/// number that is not finite is skipped, and so is a fixed body whose pose has one.
 class FixedBodyGuard {
 public:
     /// Puts back each entry of `end` whose centre's path from `start` enters a fixed body's piece.
@@ -39,6 +48,10 @@ public:
     /// the soft grids' ellipses) at the start and the end of a substep; fixed bodies' entries give
     /// their poses at both. Returns how many entries it put back.
     int keepOut(const model::World& world, std::span<const model::BodyState> start, std::span<model::BodyState> end);
+
+    /// The bodies the last keepOut put back, each with the fixed body it had entered, once per pair,
+    /// in the order of the state list.
+    const std::vector<KeptOut>& keptOut() const { return m_keptOut; }
 
 private:
     std::vector<BroadPhaseProxy> m_proxies; ///< the fixed bodies' boxes, then the paths' boxes
@@ -58,6 +71,7 @@ private:
         Vec2 to = Vec2::Zero(); ///< the path's end, in the fixed body's frame at the end
     };
     std::vector<Hit> m_hits;
+    std::vector<KeptOut> m_keptOut;
     BroadPhase m_broadPhase; ///< its own cache, apart from the contacts' broad phase
 };
 
