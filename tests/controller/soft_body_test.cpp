@@ -914,5 +914,32 @@ TEST(SoftGrid, AGridOfOneEllipseKeepsTheAngleItHad)
     EXPECT_EQ(a.inertia, 0);
 }
 
+TEST(SoftGrid, AGridCrushedUntilItsEllipsesMeetTurnsWithAQuarterOfItsRestInertia)
+{
+    // Two ellipses of 22 kg, 0.15 m apart at rest, crushed to 3 mm apart and spinning about each
+    // other at 2 rad/s: their own moment of inertia, 22·2·(1.5 mm)² = 1e-4 kg·m², would let a
+    // torque of 374 N·m (soak seed 2173's springs) turn them at 3.7 million rad/s². The aggregate
+    // takes a quarter of the rest lattice's, 22·2·(75 mm)²/4 = 0.062 kg·m², and the spin's
+    // angular momentum over it.
+    model::SoftGrid grid;
+    grid.restPositions = {Vec2(-0.075, 0), Vec2(0.075, 0)};
+    grid.ellipseMass = 22;
+    const Scalar half = 0.0015;
+    const std::vector<Vec2> positions{Vec2(3 - half, 4), Vec2(3 + half, 4)};
+    const std::vector<Vec2> velocities{Vec2(0, -2 * half), Vec2(0, 2 * half)};
+    const controller::SoftAggregate crushed = controller::softAggregate(grid, positions, velocities, 0);
+    const Scalar restInertia = 22 * 2 * 0.075 * 0.075;
+    EXPECT_NEAR(crushed.inertia, 0.25 * restInertia, 1e-15);
+    const Scalar angularMomentum = 22 * 2 * half * (2 * half); // Σ m·(p × v)
+    EXPECT_NEAR(crushed.angularVelocity, angularMomentum / crushed.inertia, 1e-12);
+    EXPECT_EQ(crushed.position, Vec2(3, 4));
+    // At rest size (and down to half of it) the grid's own inertia and spin stand.
+    const std::vector<Vec2> rest{Vec2(2.925, 4), Vec2(3.075, 4)};
+    const std::vector<Vec2> spinning{Vec2(0, -0.15), Vec2(0, 0.15)};
+    const controller::SoftAggregate free = controller::softAggregate(grid, rest, spinning, 0);
+    EXPECT_NEAR(free.inertia, restInertia, 1e-12 * restInertia); // the positions to rounding
+    EXPECT_NEAR(free.angularVelocity, 2.0, 1e-12);
+}
+
 } // namespace
 } // namespace impetus
