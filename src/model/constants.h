@@ -369,11 +369,11 @@ inline constexpr Scalar kSoftShapeMatching = 10.0;
 /// magnitude below a cell (≥ 1 mm): no grid that still has a shape comes near it.
 inline constexpr Scalar kSoftMinSpringLength = 1e-12;
 
-/// The least moment of inertia a soft grid's aggregate takes, as a fraction of its rest lattice's,
-/// m·Σ|r|² (the lattice as built; a grid squeezed to half its size in both directions has a
-/// quarter). A grid crushed until its ellipses nearly meet (two ellipses of a 44 kg box pressed
-/// against a wall, 3 mm apart: soak seed 2173) has almost none, and the smooth forces' torque on
-/// it, spread over the ellipses as a turn (force_model.cpp), and the joints' on it, turned them at
+/// The least moment of inertia a soft grid's aggregate has for the smooth forces (scene springs,
+/// their damping), as a fraction of its rest lattice's, m·Σ|r|² (a grid squeezed to half its size
+/// in both directions has a quarter). A grid crushed until its ellipses nearly meet (two ellipses
+/// of a 44 kg box pressed against a wall, 3 mm apart: soak seed 2173) has almost none, and the
+/// springs' torque on it, spread over the ellipses as a turn (force_model.cpp), turned them at
 /// millions of rad/s² within one RK4 step: 75 kJ became 10.6 MJ. Real bodies do not shrink to a
 /// point; the floor acts only on grids crushed past any shape a user means.
 inline constexpr Scalar kSoftMinInertiaFraction = 0.25;

@@ -914,31 +914,48 @@ TEST(SoftGrid, AGridOfOneEllipseKeepsTheAngleItHad)
     EXPECT_EQ(a.inertia, 0);
 }
 
-TEST(SoftGrid, AGridCrushedUntilItsEllipsesMeetTurnsWithAQuarterOfItsRestInertia)
+TEST(SoftBody, ASpringTurnsAGridCrushedUntilItsEllipsesMeetAsIfItKeptAQuarterOfItsInertia)
 {
-    // Two ellipses of 22 kg, 0.15 m apart at rest, crushed to 3 mm apart and spinning about each
-    // other at 2 rad/s: their own moment of inertia, 22·2·(1.5 mm)² = 1e-4 kg·m², would let a
-    // torque of 374 N·m (soak seed 2173's springs) turn them at 3.7 million rad/s². The aggregate
-    // takes a quarter of the rest lattice's, 22·2·(75 mm)²/4 = 0.062 kg·m², and the spin's
-    // angular momentum over it.
-    model::SoftGrid grid;
-    grid.restPositions = {Vec2(-0.075, 0), Vec2(0.075, 0)};
-    grid.ellipseMass = 22;
-    const Scalar half = 0.0015;
-    const std::vector<Vec2> positions{Vec2(3 - half, 4), Vec2(3 + half, 4)};
-    const std::vector<Vec2> velocities{Vec2(0, -2 * half), Vec2(0, 2 * half)};
-    const controller::SoftAggregate crushed = controller::softAggregate(grid, positions, velocities, 0);
-    const Scalar restInertia = 22 * 2 * 0.075 * 0.075;
-    EXPECT_NEAR(crushed.inertia, 0.25 * restInertia, 1e-15);
-    const Scalar angularMomentum = 22 * 2 * half * (2 * half); // Σ m·(p × v)
-    EXPECT_NEAR(crushed.angularVelocity, angularMomentum / crushed.inertia, 1e-12);
-    EXPECT_EQ(crushed.position, Vec2(3, 4));
-    // At rest size (and down to half of it) the grid's own inertia and spin stand.
-    const std::vector<Vec2> rest{Vec2(2.925, 4), Vec2(3.075, 4)};
-    const std::vector<Vec2> spinning{Vec2(0, -0.15), Vec2(0, 0.15)};
-    const controller::SoftAggregate free = controller::softAggregate(grid, rest, spinning, 0);
-    EXPECT_NEAR(free.inertia, restInertia, 1e-12 * restInertia); // the positions to rounding
-    EXPECT_NEAR(free.angularVelocity, 2.0, 1e-12);
+    // A 44 kg sliver of two ellipses, 0.15 m apart at rest, on a spring of 1 kN/m from 1 m above
+    // its centre to the world 2 m to the right (stretched by 1 m): a pull of 1 kN, a torque of
+    // −1 kN·m. Crushed to 3 mm apart, its own inertia, 44·(1.5 mm)² = 1e-4 kg·m², would turn it
+    // at 10 million rad/s² (soak seed 2173: 75 kJ to 10.6 MJ in one RK4 step); the springs turn
+    // it as if it kept a quarter of the rest lattice's, 44·(75 mm)²/4. At rest size they turn it
+    // with its own.
+    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
+    world.bodies.push_back(soft(makeBox("sliver", 44, 0.3, 0.1, Vec2::Zero()), 4));
+    controller::prepareSoftBodies(world);
+    const model::SoftGrid& grid = world.softBodies[0];
+    ASSERT_EQ(grid.size(), 2u);
+    model::Spring spring;
+    spring.bodyA = model::BodyId{0};
+    spring.anchorA = Vec2(0, 1);
+    spring.anchorB = Vec2(2, 1);
+    spring.stiffness = 1000;
+    spring.restLength = 1;
+    std::vector<model::BodyState> states;
+    controller::gatherStates(world, states);
+    const auto turnOf = [&](Scalar apart) {
+        // The ellipses along the body's x axis, `apart` metres apart about its centre, at rest;
+        // what the spring adds to each one's acceleration, less the pull F/M, is α × r.
+        std::vector<model::BodyState> crushed = states;
+        crushed[1].position = Vec2(grid.restPositions[0].x() < 0 ? -apart / 2 : apart / 2, 0);
+        crushed[2].position = -crushed[1].position;
+        std::vector<controller::BodyDerivative> without;
+        std::vector<controller::BodyDerivative> with;
+        controller::computeDerivatives(world, crushed, without);
+        model::World sprung = world;
+        sprung.springs.push_back(spring);
+        controller::computeDerivatives(sprung, crushed, with);
+        const Vec2 turn = with[1].acceleration - without[1].acceleration - Vec2(1000.0 / 44, 0);
+        EXPECT_NEAR(turn.x(), 0, 1e-9);
+        return turn.y() / crushed[1].position.x(); // α, rad/s²
+    };
+    Scalar restInertia = 0;
+    for (const Vec2& r : grid.restPositions)
+        restInertia += grid.ellipseMass * r.squaredNorm();
+    EXPECT_NEAR(turnOf(0.003), -1000 / (0.25 * restInertia), 1e-9 * 1000 / restInertia);
+    EXPECT_NEAR(turnOf(0.15), -1000 / restInertia, 1e-9 * 1000 / restInertia);
 }
 
 } // namespace

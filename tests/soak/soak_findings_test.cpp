@@ -115,8 +115,11 @@ std::string seedName(const ::testing::TestParamInfo<std::string>& seed)
 // 3 mm apart, pressed against the right wall by a 2 t circle, pinned and on a rod to a 269 kg
 // ellipse; RK4, zero gravity, 1/240 s; 75 kJ became 10.6 MJ in one step at 4.4 s), whose moment
 // of inertia, near zero, turned the springs' and joints' torque on it into millions of rad/s²,
-// by a grid's aggregate keeping a quarter of its rest lattice's inertia at least
-// (constants::kSoftMinInertiaFraction; SoftGrid.AGridCrushedUntilItsEllipsesMeet...).
+// by the smooth forces turning a grid as if it kept a quarter of its rest lattice's inertia at
+// least (constants::kSoftMinInertiaFraction; SoftBody.ASpringTurnsAGridCrushedUntil...). 3239 (a
+// two-ellipse soft body pinned 4 m from its centre to a 1 t ellipse at 70 m/s: 0.5 MJ to 3.4 MJ
+// in two steps) failed when the floor was first put on the aggregate itself, which the joints see
+// too: they then handed the ellipses a turn of the momentum they computed for the larger inertia.
 INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                          ::testing::Values("2", "3", "4", "8", "17", "18", "27", "30", "31", "49", "51", "61",
                                            "65", "66", "68", "69", "86", "87", "92", "111", "117", "121", "131",
@@ -128,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(SoakFindings, SoakFinding,
                                            "4386", "5812", "104-g2", "111-g2", "131-g2", "1210", "3446", "3785",
                                            "4458", "4870", "6097", "6257", "6327", "7042", "5292",
                                            "8426", "104", "140", "177", "2087", "2146", "4062", "6118", "6715",
-                                           "6738", "8187", "8336", "9217", "9742", "2173", "3477"),
+                                           "6738", "8187", "8336", "9217", "9742", "2173", "3477", "3239"),
                          seedName);
 
 // Fixed, the earlier generators' 104, 140 and 177 (in the list above since 2026-11-29): they were

@@ -234,8 +234,20 @@ std::vector<model::BodyState> aggregateStates(const model::World& world, std::sp
             positions.push_back(states[offset + i].position);
             velocities.push_back(states[offset + i].velocity);
         }
-        const SoftAggregate a =
-            softAggregate(grid, positions, velocities, world.bodies[grid.body.index].state.angle);
+        SoftAggregate a = softAggregate(grid, positions, velocities, world.bodies[grid.body.index].state.angle);
+        // The smooth forces turn a grid crushed until its ellipses nearly meet as if it kept a share
+        // of its rest lattice's inertia (constants::kSoftMinInertiaFraction), with its angular
+        // momentum: the angular velocity at which its springs' ends move, and the turn their torque
+        // gives it, stay bounded. (The joints see its own inertia: what they hand on to the
+        // ellipses as a rigid motion must be the momentum they computed.)
+        Scalar rest = 0;
+        for (const Vec2& r : grid.restPositions)
+            rest += r.squaredNorm();
+        const Scalar least = constants::kSoftMinInertiaFraction * grid.ellipseMass * rest;
+        if (a.inertia < least) {
+            a.angularVelocity *= a.inertia / least;
+            a.inertia = least;
+        }
         aggregates.push_back(a);
         bodies[grid.body.index] = model::BodyState{a.position, a.angle, a.velocity, a.angularVelocity};
         offset += grid.size();

@@ -288,7 +288,6 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
     Scalar crossSum = 0;
     Scalar spin = 0;
     Scalar inertia = 0;
-    Scalar restInertia = 0;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const Vec2 p = positions[i] - a.position;
         const Vec2& r = grid.restPositions[i];
@@ -296,11 +295,7 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
         crossSum += cross(r, p);
         spin += cross(p, Vec2(velocities[i] - a.velocity));
         inertia += p.squaredNorm();
-        restInertia += r.squaredNorm();
     }
-    // A grid crushed until its ellipses nearly meet turns as if it kept a quarter of its rest
-    // inertia at least (constants::kSoftMinInertiaFraction).
-    inertia = std::max(inertia, constants::kSoftMinInertiaFraction * restInertia);
     // A grid of one ellipse has no rest lattice to fit: it keeps the angle it had, so that a
     // joint's anchor on it stays where it was (taken as 0, atan2(0, 0), it swung a pin's anchor
     // on such a body round its centre and the joint tore the bodies apart: soak seeds 2429 and

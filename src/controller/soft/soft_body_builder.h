@@ -44,9 +44,7 @@ struct SoftAggregate {
     Scalar angle = 0; ///< best-fit rotation from the rest lattice, rad
     Vec2 velocity = Vec2::Zero(); ///< total momentum / mass, m/s
     Scalar angularVelocity = 0; ///< angular momentum about the centre / inertia, rad/s
-    /// Σ m·|x − c|² of the ellipses now, kg·m², and never under constants::kSoftMinInertiaFraction
-    /// of the rest lattice's (angularVelocity is the angular momentum over the same)
-    Scalar inertia = 0;
+    Scalar inertia = 0; ///< Σ m·|x − c|² of the ellipses now, kg·m²
 };
 
 /// The aggregate of a grid whose ellipses are at `positions` with `velocities`. The best-fit angle
