@@ -45,9 +45,6 @@ constexpr Scalar kMaxUnlikeMassTurnPerSubstep = 0.1;
 /// second at 0.2 rad and 0.1 % at 0.1 rad (soak seed 5812).
 constexpr Scalar kMaxRodTurnPerSubstep = 0.1;
 
-/// The box around both boxes.
-Aabb merged(const Aabb& a, const Aabb& b) { return Aabb{a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)}; }
-
 using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start)
@@ -435,7 +432,7 @@ void Simulation::addStrikeShares(const model::World& world, Scalar h)
         const std::uint32_t body = pieces[i].body;
         Aabb box = boxes[i];
         for (++i; i < pieces.size() && pieces[i].body == body; ++i)
-            box = merged(box, boxes[i]);
+            box = Aabb::merged(box, boxes[i]);
         const model::BodyState& s = m_startStates[body];
         const bool fixed = world.bodies[body].fixed;
         if (!fixed || !s.velocity.isZero() || s.angularVelocity != 0)
@@ -532,7 +529,7 @@ void Simulation::findPairsWithSoftBodies(const model::World& world)
         Aabb box = boxes[i];
         if (world.softGrid(model::BodyId{body})) {
             for (; end < pieces.size() && pieces[end].body == body; ++end)
-                box = merged(box, boxes[end]);
+                box = Aabb::merged(box, boxes[end]);
         }
         m_proxies.push_back(BroadPhaseProxy{box, body, world.bodies[body].fixed});
         m_proxyPieces.push_back({i, end});

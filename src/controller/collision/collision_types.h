@@ -20,6 +20,12 @@ struct Aabb {
         return lower.x() <= other.upper.x() && other.lower.x() <= upper.x() && lower.y() <= other.upper.y() &&
                other.lower.y() <= upper.y();
     }
+
+    /// The smallest box that holds both.
+    static Aabb merged(const Aabb& a, const Aabb& b)
+    {
+        return Aabb{a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)};
+    }
 };
 
 /// Names the pair of features (vertices, edges) that produced a contact point, so that the same

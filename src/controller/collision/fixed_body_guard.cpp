@@ -83,8 +83,6 @@ constexpr std::size_t kFewFixedBodies = 16;
 /// the body; the guard must not hide it, nor spread it to the bodies it would put back).
 bool finite(const model::BodyState& state) { return state.position.allFinite() && std::isfinite(state.angle); }
 
-Aabb merged(const Aabb& a, const Aabb& b) { return Aabb{a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)}; }
-
 /// The box around a body's shape at pose `pose`, m.
 Aabb boxAt(const model::Body& body, const Transform& pose)
 {
@@ -166,7 +164,7 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
             continue; // a fixed body with no place puts nothing back (NaN would spread)
         const Transform from = Transform::of(start[i]);
         const Transform to = Transform::of(end[i]);
-        m_proxies.push_back(BroadPhaseProxy{merged(boxAt(body, from), boxAt(body, to)), static_cast<std::uint32_t>(i), false});
+        m_proxies.push_back(BroadPhaseProxy{Aabb::merged(boxAt(body, from), boxAt(body, to)), static_cast<std::uint32_t>(i), false});
         m_fixedPoses.push_back({from, to});
     }
     const std::size_t fixedCount = m_proxies.size();
