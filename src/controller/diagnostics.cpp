@@ -58,7 +58,7 @@ Energy computeEnergy(const model::World& world, std::span<const model::BodyState
         const SoftAggregate a = softAggregate(grid, positions, velocities, states[grid.body.index].angle);
         const Scalar matching = softShapeMatchingStiffness(grid, body);
         for (std::size_t i = 0; i < grid.size(); ++i) {
-            const Vec2 goal = a.position + rotate(grid.restPositions[i], a.angle);
+            const Vec2 goal = a.position + rotate(grid.restPositions[i], a.bestFit);
             e.elastic += 0.5 * matching * (positions[i] - goal).squaredNorm();
         }
     }

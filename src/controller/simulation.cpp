@@ -934,7 +934,7 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     }
     m_profile.positionMs += millisecondsSince(positionStart);
     scatterStates(world, m_endStates, bodyTasks(world));
-    updateSoftOwners(world);
+    updateSoftOwners(world, m_startStates);
     if (m_ledger)
         m_ledger->endSubstep(world);
     solveMs += millisecondsSince(velocityStart);

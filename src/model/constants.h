@@ -378,6 +378,11 @@ inline constexpr Scalar kSoftMinSpringLength = 1e-12;
 /// point; the floor acts only on grids crushed past any shape a user means.
 inline constexpr Scalar kSoftMinInertiaFraction = 0.25;
 
+/// The fit quality (soft_body_builder.h, softAggregate) from which a soft grid's frame follows its
+/// best-fit angle in full: a grid squeezed to half its size in both directions, whose inertia is
+/// then kSoftMinInertiaFraction of its rest lattice's. Below it the frame follows in proportion.
+inline constexpr Scalar kSoftFullFitQuality = 0.5;
+
 /// Points on the outline of a round soft body (circle, ellipse) mapped through its grid.
 inline constexpr int kSoftRoundOutlinePoints = 64;
 

@@ -81,6 +81,11 @@ struct SoftGrid {
     // Runtime state.
     std::vector<Vec2> positions; ///< ellipse centres, world, m
     std::vector<Vec2> velocities; ///< m/s
+    /// The best-fit rotation of the rest lattice onto `positions`, rad, counted on continuously
+    /// (controller::softAggregate). The owner's angle, the grid's frame, turns with it while the
+    /// grid keeps its shape; a grid that was crushed keeps the frame where its ellipses' turn
+    /// took it, and the two then differ.
+    Scalar fitAngle = 0;
     /// The state last written to the owning body. A body whose state differs was moved by hand
     /// (the editor), and its grid is placed again as a rigid copy of the new state.
     BodyState ownerState;

@@ -140,6 +140,10 @@ void restoreSoftState(model::SoftGrid& grid, const model::Body& body)
         return;
     grid.positions = body.softState->positions;
     grid.velocities = body.softState->velocities;
+    // The file keeps the frame (the body's angle), not the best fit: the fit is taken afresh, in
+    // the half turn nearest the frame.
+    grid.fitAngle = body.state.angle;
+    grid.fitAngle = softAggregate(grid, grid.positions, grid.velocities, body.state.angle).fitAngle;
     grid.ownerState = body.state;
     grid.rigidCopy = false;
 }
@@ -268,11 +272,19 @@ void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state)
         grid.velocities[i] = state.velocity + cross(state.angularVelocity, arm);
     }
     grid.ownerState = state;
+    grid.fitAngle = state.angle;
     grid.rigidCopy = true;
 }
 
+namespace {
+
+/// `turn` taken in the half turn nearest zero, (−π/2, π/2].
+Scalar nearestHalfTurn(Scalar turn) { return turn - std::numbers::pi * std::round(turn / std::numbers::pi); }
+
+} // namespace
+
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
-                            std::span<const Vec2> velocities, Scalar referenceAngle)
+                            std::span<const Vec2> velocities, const SoftReference& reference)
 {
     // Every ellipse has the same mass, so means are mass-weighted means.
     SoftAggregate a;
@@ -283,11 +295,26 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
     }
     a.position /= count;
     a.velocity /= count;
+    const bool moved = !reference.positions.empty() && reference.positions.data() != positions.data() &&
+                       reference.positions.size() == positions.size();
+    Vec2 centreThen = a.position;
+    if (moved) {
+        centreThen = Vec2::Zero();
+        for (const Vec2& p : reference.positions)
+            centreThen += p;
+        centreThen /= count;
+    }
 
     Scalar dot = 0;
     Scalar crossSum = 0;
+    Scalar dotThen = 0;
+    Scalar crossThen = 0;
+    Scalar dotTurn = 0;
+    Scalar crossTurn = 0;
     Scalar spin = 0;
     Scalar inertia = 0;
+    Scalar restSpread = 0;
+    Scalar spreadThen = 0;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const Vec2 p = positions[i] - a.position;
         const Vec2& r = grid.restPositions[i];
@@ -295,22 +322,59 @@ SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> p
         crossSum += cross(r, p);
         spin += cross(p, Vec2(velocities[i] - a.velocity));
         inertia += p.squaredNorm();
+        restSpread += r.squaredNorm();
+        if (moved) {
+            const Vec2 then = reference.positions[i] - centreThen;
+            dotThen += r.dot(then);
+            crossThen += cross(r, then);
+            spreadThen += then.squaredNorm();
+            dotTurn += then.dot(p);
+            crossTurn += cross(then, p);
+        }
     }
+    if (!moved) {
+        dotThen = dot;
+        crossThen = crossSum;
+        spreadThen = inertia;
+    }
+    a.angularVelocity = inertia > 0 ? spin / inertia : 0;
+    a.inertia = grid.ellipseMass * inertia;
     // A grid of one ellipse has no rest lattice to fit: it keeps the angle it had, so that a
     // joint's anchor on it stays where it was (taken as 0, atan2(0, 0), it swung a pin's anchor
     // on such a body round its centre and the joint tore the bodies apart: soak seeds 2429 and
     // 3419; the builder now makes two cells at least, but a sliver of a shape can still hold
     // one). Its ellipse cannot spin, so its inertia is 0 and it never turns.
-    if (dot == 0 && crossSum == 0) {
-        a.angle = referenceAngle;
-    } else {
-        const Scalar angle = std::atan2(crossSum, dot);
-        const Scalar turn = 2 * std::numbers::pi;
-        a.angle = angle + turn * std::round((referenceAngle - angle) / turn);
+    const Scalar fit = std::hypot(dot, crossSum);
+    if (fit == 0 || !(restSpread > 0)) {
+        a.angle = reference.angle;
+        a.fitAngle = reference.fitAngle;
+        a.bestFit = reference.fitAngle;
+        return a;
     }
-    a.angularVelocity = inertia > 0 ? spin / inertia : 0;
-    a.inertia = grid.ellipseMass * inertia;
+    a.bestFit = std::atan2(crossSum, dot);
+    // The best fit of a grid whose ellipses pass through one another (two ellipses struck into
+    // each other, a lattice turned inside out) flips by half a turn within a step: the fit
+    // shrinks to nothing and comes back the other way round. A frame that followed it swung a
+    // joint's anchor metres from the grid to the far side of it, and the joint tore the bodies
+    // apart (soak seed 1014); one that followed a torn grid's fit by a share turned against the
+    // grid's own spin, and the pin that held it there pumped energy in (4961). So a turn is taken
+    // in the half turn nearest the reference (a two-ellipse grid turned by half a turn is the same
+    // grid), and a grid crushed then or now turns its frame as its ellipses turn about their
+    // centre, which its angular momentum is (the turn of the fit for the rest).
+    const Scalar fitTurn = nearestHalfTurn(a.bestFit - reference.fitAngle);
+    a.fitAngle = reference.fitAngle + fitTurn;
+    const Scalar quality = std::min(fit / std::max(restSpread, std::sqrt(restSpread * inertia)),
+                                    std::hypot(dotThen, crossThen) / std::max(restSpread, std::sqrt(restSpread * spreadThen)));
+    const Scalar share = std::min<Scalar>(1, quality / constants::kSoftFullFitQuality);
+    const Scalar ownTurn = dotTurn == 0 && crossTurn == 0 ? 0 : nearestHalfTurn(std::atan2(crossTurn, dotTurn));
+    a.angle = reference.angle + share * fitTurn + (1 - share) * ownTurn;
     return a;
+}
+
+SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
+                            std::span<const Vec2> velocities, Scalar referenceAngle)
+{
+    return softAggregate(grid, positions, velocities, SoftReference{grid.positions, referenceAngle, grid.fitAngle});
 }
 
 void prepareSoftBodies(model::World& world)
@@ -372,13 +436,25 @@ void prepareSoftBodies(model::World& world)
         body.softState.reset();
 }
 
-void updateSoftOwners(model::World& world)
+void updateSoftOwners(model::World& world, std::span<const model::BodyState> previous)
 {
+    std::vector<Vec2> then;
+    std::size_t offset = world.bodies.size();
     for (model::SoftGrid& grid : world.softBodies) {
         model::Body& body = world.bodies[grid.body.index];
-        const SoftAggregate a = softAggregate(grid, grid.positions, grid.velocities, body.state.angle);
+        then.clear();
+        Scalar angleThen = body.state.angle;
+        if (previous.size() >= offset + grid.size()) {
+            for (std::size_t i = 0; i < grid.size(); ++i)
+                then.push_back(previous[offset + i].position);
+            angleThen = previous[grid.body.index].angle;
+        }
+        offset += grid.size();
+        const SoftAggregate a =
+            softAggregate(grid, grid.positions, grid.velocities, SoftReference{then, angleThen, grid.fitAngle});
         body.state.position = a.position;
         body.state.angle = a.angle;
+        grid.fitAngle = a.fitAngle;
         body.state.velocity = a.velocity;
         body.state.angularVelocity = a.angularVelocity;
         grid.ownerState = body.state;

@@ -37,20 +37,44 @@ model::SoftGrid buildSoftGrid(const model::Body& body, model::BodyId id, Scalar 
 /// state.angle, every ellipse moving with v + ω × r. Records `state` as the owner's state.
 void placeSoftGrid(model::SoftGrid& grid, const model::BodyState& state);
 
-/// A grid's motion as one body: centre of mass and its velocity, the best-fit rotation and the
+/// A grid's motion as one body: centre of mass and its velocity, the turn of its frame and the
 /// angular velocity of the ellipses about the centre of mass.
 struct SoftAggregate {
     Vec2 position = Vec2::Zero(); ///< centre of mass, m
-    Scalar angle = 0; ///< best-fit rotation from the rest lattice, rad
+    /// The turn of the grid's frame, rad: the owner's angle, where joints and scene springs hold
+    /// it. It follows the best fit while the grid keeps its shape (see softAggregate).
+    Scalar angle = 0;
+    /// The best-fit rotation of the rest lattice onto the ellipses, rad, counted on continuously
+    /// from the reference's (in the half turn nearest it): what the grid's fitAngle becomes.
+    Scalar fitAngle = 0;
+    /// The best-fit rotation itself, atan2(Σ r × p, Σ r · p), rad: where shape matching pulls.
+    Scalar bestFit = 0;
     Vec2 velocity = Vec2::Zero(); ///< total momentum / mass, m/s
     Scalar angularVelocity = 0; ///< angular momentum about the centre / inertia, rad/s
     Scalar inertia = 0; ///< Σ m·|x − c|² of the ellipses now, kg·m²
 };
 
-/// The aggregate of a grid whose ellipses are at `positions` with `velocities`. The best-fit angle
-/// θ maximises Σ (x − c)·R(θ)·r (r the rest positions): θ = atan2(Σ r × p, Σ r · p), taken in the
-/// turn nearest `referenceAngle` so that a spinning body's angle keeps counting.
-/// A grid of one ellipse keeps `referenceAngle`.
+/// Where a grid's frame was last taken: the ellipses then, its frame angle (the owner's) and its
+/// fitAngle then.
+struct SoftReference {
+    std::span<const Vec2> positions; ///< the ellipses' centres then, m (empty: the same as now)
+    Scalar angle = 0; ///< the frame's turn then, rad
+    Scalar fitAngle = 0; ///< the best fit then, counted on, rad
+};
+
+/// The aggregate of a grid whose ellipses are at `positions` with `velocities`, its frame turned
+/// on from `reference`. The best fit θ maximises Σ (x − c)·R(θ)·r (r the rest positions):
+/// θ = atan2(Σ r × p, Σ r · p). While the grid keeps its shape the frame turns as the best fit
+/// does; a grid crushed or turned inside out (its fit quality |Σ r·p, Σ r×p| / Σ|r|² below
+/// constants::kSoftFullFitQuality, then or now) has a best fit that is a guess, which can flip by
+/// half a turn within a step, and its frame turns in that proportion as its ellipses turn about
+/// their centre instead (the best fit of the ellipses now onto where they were). Turns are taken
+/// in the half turn nearest the reference, so that the frame turns continuously and a spinning
+/// body's angle keeps counting. A grid of one ellipse keeps the reference's angle.
+SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
+                            std::span<const Vec2> velocities, const SoftReference& reference);
+/// The aggregate with the grid as it is stored as the reference, its frame at `referenceAngle`
+/// (the owner's angle).
 SoftAggregate softAggregate(const model::SoftGrid& grid, std::span<const Vec2> positions,
                             std::span<const Vec2> velocities, Scalar referenceAngle);
 
@@ -75,8 +99,11 @@ Scalar softShapeMatchingDamping(const model::SoftGrid& grid, const model::Body& 
 void prepareSoftBodies(model::World& world);
 
 /// Sets every soft body's state to its grid's aggregate (position = centre of mass of its
-/// ellipses, velocity = momentum / mass, angle = best-fit rotation, angular velocity).
-void updateSoftOwners(model::World& world);
+/// ellipses, velocity = momentum / mass, angle = its frame's turn, angular velocity), and each
+/// grid's fitAngle. `previous`, when given, is the world's states (as gatherStates lays them out)
+/// from which the grids last moved, owners and ellipses: the frames turn on from there. Without
+/// it each grid is taken as it is, from its owner's angle now.
+void updateSoftOwners(model::World& world, std::span<const model::BodyState> previous = {});
 
 /// The ellipses of every grid before grid g, i.e. where g's ellipses start in the world's state
 /// list after the bodies (see force_model.h, stateCount).

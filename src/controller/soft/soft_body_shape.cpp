@@ -1,4 +1,5 @@
 #include "controller/soft/soft_body_shape.h"
+#include "controller/soft/soft_body_builder.h"
 
 #include "model/constants.h"
 
@@ -71,7 +72,9 @@ std::vector<Vec2> softOutline(const model::World& world, const model::SoftGrid& 
 {
     const model::Body& body = world.bodies[grid.body.index];
     const Vec2 centre = body.state.position;
-    const Scalar angle = body.state.angle;
+    // The best-fit rigid motion (not the frame, which a grid crushed once may have left turned
+    // away from its ellipses).
+    const Scalar angle = softAggregate(grid, grid.positions, grid.velocities, body.state.angle).bestFit;
     // How far each ellipse is from where the best-fit rigid motion would put it.
     std::vector<Vec2> displacement(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i)
@@ -123,9 +126,11 @@ std::vector<Vec2> softOutline(const model::World& world, const model::SoftGrid& 
     return outline;
 }
 
-std::vector<SoftEllipseView> softEllipses(const model::World& world, const model::SoftGrid& grid)
+std::vector<SoftEllipseView> softEllipses(const model::World& /*world*/, const model::SoftGrid& grid)
 {
-    const Scalar angle = world.bodies[grid.body.index].state.angle;
+    // Along the lattice's axes as the ellipses lie now (an ellipse turned by half a turn is the
+    // same ellipse).
+    const Scalar angle = grid.fitAngle;
     const Vec2 semi = grid.semiAxes();
     std::vector<SoftEllipseView> ellipses;
     ellipses.reserve(grid.size());
