@@ -50,7 +50,7 @@ public:
     bool isColliding() const { return m_colliding; }
 
     /// Draws a soft body deformed: `outline` is its current outline in the body frame (m), as
-    /// controller::softOutline gives it after mapping into the body's best-fit frame. An empty
+    /// controller::softOutline gives it after mapping into the body's frame. An empty
     /// outline goes back to the rigid shape.
     void setDeformedOutline(const std::vector<Vec2>& outline);
     /// Draws a selection outline over the body while `on`.

@@ -332,7 +332,7 @@ void CanvasView::syncSoftBody(std::size_t i)
     const model::SoftGrid* grid = world.softGrid(id);
     if (!grid || grid->size() == 0 || i >= m_bodyItems.size())
         return;
-    // The outline comes in world coordinates; the item draws in the body's (best-fit) frame.
+    // The outline comes in world coordinates; the item draws in the body's frame.
     const model::BodyState& state = world.bodies[i].state;
     const double c = std::cos(state.angle);
     const double s = std::sin(state.angle);

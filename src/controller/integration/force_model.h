@@ -65,8 +65,8 @@ std::pair<Vec2, Vec2> springEnds(const model::Spring& spring, std::span<const mo
 ///    shape matching's pull towards its goal. A grid's damping (its springs' c, shape matching's
 ///    and the internal damping) is no force here: it is a pass of its own, dampSoftGrids
 ///    (soft/soft_damping.h), which Simulation runs before every substep.
-/// A scene spring attached to a soft body acts on the body's aggregate (centre of mass, best-fit
-/// rotation, see softAggregate); its force and torque are shared out over the ellipses as a rigid
+/// A scene spring attached to a soft body acts on the body's aggregate (centre of mass, the turn
+/// of its frame, see softAggregate); its force and torque are shared out over the ellipses as a rigid
 /// body would feel them (a = F/M + (τ/I) × r), which keeps momentum and angular momentum.
 /// Fixed bodies get no acceleration: they keep the velocity they are given. A soft body's own
 /// entry gets a zero derivative: its state follows its grid (updateSoftOwners).

@@ -17,7 +17,7 @@ struct SoftEllipseView {
     Vec2 center = Vec2::Zero(); ///< m
     Scalar radiusX = 0; ///< semi-axis along the ellipse's own x, m
     Scalar radiusY = 0; ///< semi-axis along its own y, m
-    Scalar angle = 0; ///< of its x axis, rad (the body's best-fit angle)
+    Scalar angle = 0; ///< of its x axis, rad (the grid's best fit, model::SoftGrid::fitAngle)
 };
 
 /// One spring of a soft grid in world coordinates, with its strain.
