@@ -52,6 +52,16 @@ model::World worldWithGround()
     return world;
 }
 
+/// A gravity-free world (RK4, 1/240 s) holding a 44 kg soft sliver of 0.3 × 0.1 m at the origin,
+/// its springs damped by `damping` N·s/m: a grid of two ellipses 0.15 m apart, built.
+model::World worldWithSliver(Scalar damping = 1)
+{
+    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
+    world.bodies.push_back(soft(makeBox("sliver", 44, 0.3, 0.1, Vec2::Zero()), 4, 2000, damping));
+    controller::prepareSoftBodies(world);
+    return world;
+}
+
 void run(model::World& world, Scalar seconds)
 {
     controller::Simulation simulation(controller::settingsUnderTest());
@@ -924,9 +934,7 @@ TEST(SoftBody, ASpringTurnsAGridCrushedUntilItsEllipsesMeetAsIfItKeptAQuarterOfI
     // at 10 million rad/s² (soak seed 2173: 75 kJ to 10.6 MJ in one RK4 step); the springs turn
     // it as if it kept a quarter of the rest lattice's, 44·(75 mm)²/4. At rest size they turn it
     // with its own.
-    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
-    world.bodies.push_back(soft(makeBox("sliver", 44, 0.3, 0.1, Vec2::Zero()), 4));
-    controller::prepareSoftBodies(world);
+    model::World world = worldWithSliver();
     const model::SoftGrid& grid = world.softBodies[0];
     ASSERT_EQ(grid.size(), 2u);
     model::Spring spring;
@@ -988,9 +996,7 @@ TEST(SoftGrid, TwoEllipsesThatSwapPlacesLeaveTheFrameWhereItWas)
     // Two ellipses struck through each other within a step: the best fit flips by half a turn,
     // but a grid of two ellipses turned by half a turn is the same grid, and the frame (where a
     // pin 3 m away holds it: soak seed 1014) stays.
-    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
-    world.bodies.push_back(soft(makeBox("sliver", 44, 0.3, 0.1, Vec2::Zero()), 4));
-    controller::prepareSoftBodies(world);
+    model::World world = worldWithSliver();
     const model::SoftGrid& grid = world.softBodies[0];
     ASSERT_EQ(grid.size(), 2u);
     const std::vector<Vec2> swapped{grid.positions[1] + Vec2(0, 0.002), grid.positions[0] - Vec2(0, 0.002)};
@@ -1009,10 +1015,8 @@ TEST(SoftBody, TwoEllipsesStruckThroughEachOtherDoNotSwingAPinFarAway)
     // 6 m to the far side of the grid, and the position passes dragged the grid after it (soak
     // seed 1014: a 35 % rise of a world's energy in one step, and it tripled in 0.03 s). The pin
     // does no work and the springs store what the ellipses lose: the energy does not grow.
-    model::World world = makeEmptyWorld(model::IntegratorKind::Rk4, kH);
-    world.bodies.push_back(soft(makeBox("sliver", 44, 0.3, 0.1, Vec2(0, 0)), 4, 2000, 0));
+    model::World world = worldWithSliver(0);
     world.joints.push_back(pinAt(world, model::BodyId{0}, std::nullopt, Vec2(0, 3)));
-    controller::prepareSoftBodies(world);
     model::SoftGrid& grid = world.softBodies[0];
     ASSERT_EQ(grid.size(), 2u);
     const Scalar sign = grid.positions[0].x() < grid.positions[1].x() ? 1 : -1;
