@@ -9,6 +9,7 @@
 #include <QGraphicsItem>
 #include <QLineF>
 #include <QPainterPath>
+#include <QPolygonF>
 #include <QPen>
 
 #include <vector>
@@ -18,6 +19,10 @@ namespace impetus::view {
 /// The outline of `body`'s rigid shape in its own frame (m, origin at the centre of mass): a circle
 /// or ellipse, or the true outline of a box or polygon (not its convex pieces).
 QPainterPath bodyOutlinePath(const model::Body& body);
+
+/// The outline of a box or polygon body in its own frame as a polygon, m, the vertices of
+/// bodyOutlinePath; empty for a circle or an ellipse.
+QPolygonF bodyOutlinePolygon(const model::Body& body);
 
 /// Draws one body in its own frame (metres, origin at the centre of mass, y up): a circle or an
 /// ellipse with a radius line that shows the rotation, or the outline of a box or polygon. A
@@ -81,6 +86,8 @@ private:
     model::BodyId m_id;
     QPainterPath m_outline; ///< what is drawn: the rigid outline, or the deformed one
     QPainterPath m_rigidOutline;
+    QPolygonF m_polygon; ///< m_outline as a polygon, drawn quicker (polygon_painting.h); empty for round shapes
+    QPolygonF m_rigidPolygon;
     QLineF m_radiusLine; ///< drawn for round shapes; null for polygons
     double m_rigidCircleRadius = 0; ///< m, for a circle; 0 for other shapes
     double m_circleRadius = 0; ///< m_rigidCircleRadius while drawn rigid, 0 deformed (no stamp)

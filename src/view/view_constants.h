@@ -92,6 +92,14 @@ inline constexpr double kOutlineWidthPx = 1.5;
 /// and is painted whole once no new state has come for this long while not running, ms: at rest
 /// the canvas shows exactly what a whole paint shows, a few frames after the last step.
 inline constexpr int kLayerSettleMs = 100;
+/// Distance between the diagonal lines of a fixed or colliding body's hatch, px along a row: that
+/// of Qt's 8 × 8 pattern brushes, which the hatch stood for (polygon_painting.h).
+inline constexpr double kHatchSpacingPx = 8.0;
+/// Widest outline drawn edge by edge as square-capped lines (polygon_painting.h): at 2 px their
+/// corners stick out past a round join by 0.41 px at most. Wider (projector mode's thick lines),
+/// the outline is stroked with its round joins.
+inline constexpr double kEdgeLinesMaxWidthPx = 2.0;
+
 /// A round body's stamped picture (body_stamps.h) puts its centre on a grid of this many steps
 /// per pixel: within 1/8 px of the true centre, which antialiasing cannot show, with 16 pictures
 /// per look and size.
