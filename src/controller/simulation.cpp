@@ -82,6 +82,23 @@ Scalar fastestTravel(const model::World& world, Scalar h)
     return fastest * h;
 }
 
+bool contactsLastTheStep(const model::World& world, Scalar h)
+{
+    for (const model::Body& body : world.bodies) {
+        const Scalar radius = body.geometry.boundingRadius;
+        const Scalar travel = h * (body.state.velocity.norm() + std::abs(body.state.angularVelocity) * radius);
+        // A moving fixed body strikes whatever it meets at its own speed: only the constant margin.
+        Scalar allowed = constants::kReuseContactsMaxTravel;
+        if (!body.fixed)
+            allowed = std::max(allowed, std::min(constants::kReuseContactsMaxBodyTravel,
+                                                 constants::kReuseContactsMaxTravelFraction * radius));
+        // Written so that a NaN travel fails.
+        if (!(travel <= allowed))
+            return false;
+    }
+    return true;
+}
+
 int solverSubsteps(Scalar h, Scalar maxSubstep)
 {
     if (!(h > 0) || !(maxSubstep > 0))
@@ -975,9 +992,9 @@ void Simulation::step(model::World& world)
     // with margins for the whole step, and its later substeps refresh them (ContactSolver::refresh):
     // one collision pass and one build a step, as Box2D v3 does. Where bodies move fast the whole
     // step's margins would make many more speculative contacts than they save
-    // (constants::kReuseContactsMaxTravel), and a soft body's ellipses move too far against each
+    // (contactsLastTheStep), and a soft body's ellipses move too far against each
     // other within a step: those steps find their contacts again every substep.
-    const bool reuse = substeps > 1 && world.softBodies.empty() && fastestTravel(world, h) <= constants::kReuseContactsMaxTravel;
+    const bool reuse = substeps > 1 && world.softBodies.empty() && contactsLastTheStep(world, h);
     for (int k = 1; k <= substeps; ++k) {
         // The last substep lands exactly on t + h, whatever the rounding of h/substeps.
         const Scalar endTime = k == substeps ? startTime + h : startTime + k * (h / substeps);

@@ -103,6 +103,12 @@ int crowdSubsteps(const model::World& world, Scalar h);
 /// speed plus its spin times its bounding radius, times h. Fixed bodies that move count too.
 Scalar fastestTravel(const model::World& world, Scalar h);
 
+/// Whether no body of `world` moves so far in h seconds that a step's contacts, found once with
+/// margins for the whole step, would cost more than finding them every substep: each body's
+/// travel (as fastestTravel's) at most kReuseContactsMaxTravel, or for a dynamic body at most
+/// kReuseContactsMaxTravelFraction of its bounding radius up to kReuseContactsMaxBodyTravel.
+bool contactsLastTheStep(const model::World& world, Scalar h);
+
 /// Steps a world with its fixed time step. Soft bodies (docs/physics.md, "Soft mode") are built
 /// into grids on the first step that needs them (prepareSoftBodies). A step is split into equal
 /// substeps when it is longer than the solver's longest step (solverSubsteps) and has contacts or

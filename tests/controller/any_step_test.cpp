@@ -557,15 +557,12 @@ TEST(AnyStepWork, ASplitStepOfARigidWorldRunsOneCollisionPass)
     model::World world = model::makePyramid(20);
     world.settings.timeStep = 1.0 / 60.0;
     Simulation simulation(settingsUnderTest());
-    // Its first steps settle the rows into their slop, at up to 15 cm/s: those may find their
-    // contacts per substep. Settled, every step runs one pass.
-    constexpr int kSettlingSteps = 5;
+    // Its first steps settle the rows into their slop, at up to 15 cm/s (2.5 mm a step, a small
+    // part of a 1 m box: contactsLastTheStep), and every step runs one pass, settling or settled.
     for (int i = 0; i < 30; ++i) {
         simulation.step(world);
         ASSERT_EQ(simulation.profile().substeps, 4) << "step " << i;
-        if (i >= kSettlingSteps) {
-            ASSERT_EQ(simulation.profile().collisionPasses, 1) << "step " << i;
-        }
+        ASSERT_EQ(simulation.profile().collisionPasses, 1) << "step " << i;
     }
     EXPECT_GT(simulation.profile().contacts, 0);
 
@@ -802,6 +799,55 @@ TEST(SolverSubsteps, AMovingFixedBodyCountsAsTravelling)
     paddle.updateDerived();
     world.bodies.push_back(paddle);
     EXPECT_DOUBLE_EQ(fastestTravel(world, 0.1), 1.0);
+}
+
+// A step's contacts are found once when each dynamic body travels at most a small part of its own
+// size (kReuseContactsMaxTravelFraction of its bounding radius, up to kReuseContactsMaxBodyTravel):
+// a pyramid of 1 m boxes settling at a few millimetres a step, not circles of 0.25 m tumbling at
+// centimetres a step, and never a moving fixed body beyond the constant margin.
+TEST(SolverSubsteps, ContactsLastTheStepWhileEachBodyMovesASmallPartOfItsSize)
+{
+    const Scalar h = 1.0 / 60.0;
+    const auto worldWith = [](model::Body body) {
+        model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 60.0);
+        body.updateDerived();
+        world.bodies.push_back(body);
+        return world;
+    };
+    // A 1 m box (bounding radius √2/2 m): 1.4 cm a step allowed, five times the constant margin.
+    model::Body box = makeBox("box", 1.0, 1.0, 1.0, Vec2::Zero());
+    const Scalar boxAllowance = constants::kReuseContactsMaxTravelFraction * std::sqrt(0.5);
+    ASSERT_GT(boxAllowance, constants::kReuseContactsMaxTravel);
+    box.state.velocity = Vec2(0, -0.99 * boxAllowance / h);
+    EXPECT_TRUE(contactsLastTheStep(worldWith(box), h));
+    box.state.velocity = Vec2(0, -1.01 * boxAllowance / h);
+    EXPECT_FALSE(contactsLastTheStep(worldWith(box), h));
+    // Its spin counts at its bounding radius, as fastestTravel's.
+    box.state.velocity = Vec2::Zero();
+    box.state.angularVelocity = 1.01 * boxAllowance / (h * std::sqrt(0.5));
+    EXPECT_FALSE(contactsLastTheStep(worldWith(box), h));
+
+    // A ball of 0.25 m: 5 mm a step; the turning box's circles at 1/60 s move 3 cm.
+    model::Body ball = makeBall("ball", 1.0, 0.25, Vec2::Zero());
+    ball.state.velocity = Vec2(0.006 / h, 0);
+    EXPECT_FALSE(contactsLastTheStep(worldWith(ball), h));
+    ball.state.velocity = Vec2(0.0045 / h, 0);
+    EXPECT_TRUE(contactsLastTheStep(worldWith(ball), h));
+
+    // A plank 10 m long: its bounding radius would allow 10 cm, the cap allows 2 cm.
+    model::Body plank = makeBox("plank", 1.0, 10.0, 0.2, Vec2::Zero());
+    plank.state.velocity = Vec2(0, -1.01 * constants::kReuseContactsMaxBodyTravel / h);
+    EXPECT_FALSE(contactsLastTheStep(worldWith(plank), h));
+
+    // A fixed body that moves gets only the constant margin, whatever its size.
+    model::Body paddle = makeBox("paddle", 1.0, 1.0, 1.0, Vec2::Zero());
+    paddle.fixed = true;
+    paddle.state.velocity = Vec2(1.01 * constants::kReuseContactsMaxTravel / h, 0);
+    EXPECT_FALSE(contactsLastTheStep(worldWith(paddle), h));
+    // And a body that is not a number never has its contacts kept.
+    box.state.angularVelocity = 0;
+    box.state.velocity = Vec2(std::nan(""), 0);
+    EXPECT_FALSE(contactsLastTheStep(worldWith(box), h));
 }
 
 // Nor do they need contacts for their own travel: what brings two surfaces together is the speed
