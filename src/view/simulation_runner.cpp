@@ -80,7 +80,7 @@ RunPace SimulationRunner::pace() const
 {
     RunPace pace = m_pace;
     pace.timeStep = m_world.settings.timeStep;
-    pace.busySeconds = m_inFlight ? static_cast<double>(m_inFlight->clock.elapsed()) * kSecondsPerMs : 0;
+    pace.busySeconds = m_inFlight && !m_inFlight->held ? static_cast<double>(m_inFlight->clock.elapsed()) * kSecondsPerMs : 0;
     return pace;
 }
 
@@ -184,12 +184,28 @@ void SimulationRunner::onTimerTick()
     const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * kSecondsPerNs;
     m_clock.restart();
     addWallTime(elapsed);
+    // The batch held for this tick is shown now; one still computing is late for it.
+    if (m_inFlight && m_inFlight->held)
+        collectBatch();
+    else if (m_inFlight)
+        m_inFlight->ticked = true;
     startNextBatch(true);
     closePaceWindowIfDue();
 }
 
 void SimulationRunner::onBatchFinished()
 {
+    // A run's batch that ends before the next tick waits for it, so that new states come at the
+    // timer's even 60 Hz rather than whenever a batch ends: a batch started at a tick and another
+    // started on the heels of a late one made frames of 11 and 22 ms in turn, 16.7 on average but
+    // half of them over the budget (docs/benchmarks.md, "Frames at the timer's pace"). One that
+    // a tick found still computing is late, and is shown at once as before.
+    const bool ready = m_inFlight && m_worker->waitUntilDone(std::chrono::steady_clock::now());
+    if (ready && m_inFlight->kind == BatchKind::Run && !m_inFlight->overtaken && !m_inFlight->ticked &&
+        isRunning()) {
+        m_inFlight->held = true;
+        return;
+    }
     // Its outcome may have been taken already by a caller that waited for it: nothing to do then.
     collectBatch();
     // Straight on with the next batch rather than at the next tick: a worker that cannot keep up
@@ -301,6 +317,9 @@ void SimulationRunner::overtakeBatch()
         return;
     m_inFlight->overtaken = true;
     m_worker->cancel();
+    // A batch held for the next tick has ended: nothing will report it again, so it goes now.
+    if (m_inFlight->held)
+        collectBatch();
 }
 
 bool SimulationRunner::finishSteps(std::optional<std::chrono::steady_clock::time_point> deadline)

@@ -211,6 +211,8 @@ private:
         BatchKind kind = BatchKind::Run;
         double owed = 0; ///< simulated time a run's batch took off the accumulator, s
         bool overtaken = false; ///< its outcome is thrown away when it ends
+        bool ticked = false; ///< a timer tick came while it was computed: it is late for that frame
+        bool held = false; ///< a run's batch that ended early, held for the next tick (onBatchFinished)
         QElapsedTimer clock; ///< started when the batch was handed over
     };
 

@@ -6,13 +6,19 @@
 #include "step_gate.h"
 #include "test_worlds.h"
 #include "view/simulation_runner.h"
+#include "view/view_constants.h"
 
 #include "controller/diagnostics.h"
 
+#include <QEventLoop>
 #include <QScopeGuard>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
+#include <vector>
+#include <algorithm>
+#include <chrono>
+#include <mutex>
 
 using impetus::view::SimulationRunner;
 namespace model = impetus::model;
@@ -39,6 +45,8 @@ private slots:
     void editDuringASlowStepGoesToTheWorldShown();
     void slowStepGoesOnInTheBackground();
     void workerGivesTheSameBitsAsOneLoop();
+    void anEarlyBatchIsShownAtTheNextTick();
+    void pauseAndEditDropAHeldBatch();
 };
 
 namespace {
@@ -433,6 +441,82 @@ void SimulationRunnerTest::workerGivesTheSameBitsAsOneLoop()
     for (std::int64_t i = 0; i < runner.world().stepCount; ++i)
         simulation.step(expected);
     QVERIFY(runner.world() == expected);
+}
+
+// A run's batch that ends before the next tick waits for that tick to be shown, so that states
+// come at the timer's even pace (docs/benchmarks.md, "Frames at the timer's pace"). Steps of no
+// cost at 1/60 s: each tick owes one step, the batch ends at once, and is shown at the next tick,
+// most of a frame later; shown on ending, it came within a millisecond.
+void SimulationRunnerTest::anEarlyBatchIsShownAtTheNextTick()
+{
+    SimulationRunner runner;
+    model::World world = test::risingBallWorld();
+    world.settings.timeStep = 1.0 / 60.0;
+    runner.setWorld(world);
+    std::mutex mutex;
+    std::chrono::steady_clock::time_point lastStepEnded;
+    runner.setStepFunction([&](impetus::controller::Simulation& simulation, model::World& w) {
+        simulation.step(w);
+        const std::lock_guard lock(mutex);
+        lastStepEnded = std::chrono::steady_clock::now();
+    });
+    std::vector<double> delaysMs;
+    connect(&runner, &SimulationRunner::stepped, this, [&] {
+        const std::lock_guard lock(mutex);
+        delaysMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lastStepEnded).count());
+    });
+    // A real event loop: QTest::qWaitFor sleeps 10 ms between its rounds of events, which would
+    // delay every report by as much.
+    QEventLoop loop;
+    connect(&runner, &SimulationRunner::stepped, &loop, [&] {
+        if (delaysMs.size() >= 20)
+            loop.quit();
+    });
+    QTimer::singleShot(5000, &loop, &QEventLoop::quit);
+    runner.play();
+    loop.exec();
+    runner.pause();
+    QVERIFY(delaysMs.size() >= 20);
+    // The median wait: a held batch waits for the tick (on average half a frame or more, as the
+    // batch starts at a tick and ends at once); one shown on ending waits for nothing.
+    std::sort(delaysMs.begin(), delaysMs.end());
+    const double median = delaysMs[delaysMs.size() / 2];
+    QVERIFY2(median > impetus::view::constants::kFrameIntervalMs / 4.0,
+             qPrintable(QStringLiteral("states shown a median %1 ms after their batch ended").arg(median)));
+}
+
+// A held batch has ended and will not report again: pausing, editing or replacing the world with
+// one held throws it away (nothing left computing, the world shown as it was), and a run goes on
+// from an edit.
+void SimulationRunnerTest::pauseAndEditDropAHeldBatch()
+{
+    SimulationRunner runner;
+    model::World world = test::risingBallWorld();
+    world.settings.timeStep = 1.0 / 60.0;
+    runner.setWorld(world);
+    QSignalSpy stepped(&runner, &SimulationRunner::stepped);
+    runner.play();
+    QVERIFY(QTest::qWaitFor([&] { return stepped.count() >= 3; }, 5000));
+    // A batch is held most of the time here (it takes microseconds, the tick comes every 16 ms).
+    // One held goes at once; one whose end is still on its way goes when that report arrives;
+    // neither is left computing for good.
+    runner.pause();
+    QVERIFY(QTest::qWaitFor([&] { return !runner.isComputing(); }, 1000));
+    const std::int64_t pausedAt = runner.world().stepCount;
+    const int shown = static_cast<int>(stepped.count());
+    QTest::qWait(3 * impetus::view::constants::kFrameIntervalMs);
+    QCOMPARE(runner.world().stepCount, pausedAt);
+    QCOMPARE(static_cast<int>(stepped.count()), shown);
+
+    runner.play();
+    QVERIFY(QTest::qWaitFor([&] { return stepped.count() >= shown + 3; }, 5000));
+    runner.editWorld([](model::World& w) { w.bodies[0].state.velocity.x() = 1; });
+    // Edited while running: the run goes on from the edit.
+    QVERIFY(QTest::qWaitFor([&] { return runner.world().bodies[0].state.position.x() > 0; }, 5000));
+    QVERIFY(runner.isRunning());
+    runner.setWorld(test::risingBallWorld());
+    QVERIFY(QTest::qWaitFor([&] { return !runner.isComputing(); }, 1000));
+    QCOMPARE(runner.world().stepCount, std::int64_t(0));
 }
 
 QTEST_MAIN(SimulationRunnerTest)
