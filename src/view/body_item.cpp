@@ -18,6 +18,15 @@ namespace {
 
 QColor toQColor(const model::Color& color) { return QColor(color.r, color.g, color.b); }
 
+QPolygonF polygonOf(const std::vector<Vec2>& points)
+{
+    QPolygonF polygon;
+    polygon.reserve(static_cast<qsizetype>(points.size()));
+    for (const Vec2& v : points)
+        polygon << QPointF(v.x(), v.y());
+    return polygon;
+}
+
 } // namespace
 
 QPolygonF bodyOutlinePolygon(const model::Body& body)
@@ -26,11 +35,7 @@ QPolygonF bodyOutlinePolygon(const model::Body& body)
         return {};
     // Boxes and polygons: the outline the model derived, already centred on the centre of mass.
     // For a concave polygon this is the true outline, not the convex pieces.
-    QPolygonF polygon;
-    polygon.reserve(static_cast<qsizetype>(body.geometry.outline.size()));
-    for (const Vec2& v : body.geometry.outline)
-        polygon << QPointF(v.x(), v.y());
-    return polygon;
+    return polygonOf(body.geometry.outline);
 }
 
 QPainterPath bodyOutlinePath(const model::Body& body)
@@ -126,9 +131,7 @@ void BodyItem::setDeformedOutline(const std::vector<Vec2>& outline)
     QPainterPath path;
     QPolygonF polygon;
     if (outline.size() >= 3) {
-        polygon.reserve(static_cast<qsizetype>(outline.size()));
-        for (const Vec2& v : outline)
-            polygon << QPointF(v.x(), v.y());
+        polygon = polygonOf(outline);
         path.addPolygon(polygon);
         path.closeSubpath();
     } else {
@@ -169,12 +172,11 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
             painter->setBrush(look.hatch);
             painter->drawPath(m_outline);
         }
-        painter->setPen(look.pen);
-        painter->setBrush(Qt::NoBrush);
-        painter->drawPath(m_outline);
     }
     painter->setPen(look.pen);
     painter->setBrush(Qt::NoBrush);
+    if (!stamped && m_polygon.isEmpty())
+        painter->drawPath(m_outline);
     if (!m_radiusLine.isNull())
         painter->drawLine(m_radiusLine);
     if (m_highlighted) {
