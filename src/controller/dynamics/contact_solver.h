@@ -267,6 +267,15 @@ private:
     void buildConstraints(const model::World& world, std::span<const PairManifold> manifolds,
                           std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives,
                           std::span<const std::uint32_t> indices, Scalar h, std::size_t part);
+    /// Asks for the memory buildConstraints() reads and writes for constraint `index`: its
+    /// manifold, the constraint itself, its record and the last step's matching record.
+    void prefetchForBuild(std::uint32_t index, std::span<const PairManifold> manifolds,
+                          const std::vector<model::ContactRecord>& previous) const;
+    /// Asks for the memory refreshConstraint(index) reads: the constraint, its record and lane,
+    /// and (called later, once the constraint's first line is in) its bodies.
+    void prefetchForRefresh(std::uint32_t index) const;
+    void prefetchBodiesForRefresh(std::uint32_t index, std::span<const SolverBody> bodies,
+                                  std::span<const BodyDerivative> derivatives) const;
     /// refresh() for constraint `index` of group `part`.
     void refreshConstraint(std::uint32_t index, std::span<SolverBody> bodies,
                            std::span<const BodyDerivative> derivatives, Scalar h, std::size_t part);

@@ -231,7 +231,19 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
         copyVelocitiesOut(bodies);
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
-        for (std::size_t bi = m_batchGroupStart[ug]; bi < m_batchGroupStart[ug + 1]; ++bi) {
+        const std::size_t end = m_batchGroupStart[ug + 1];
+        for (std::size_t bi = m_batchGroupStart[ug]; bi < end; ++bi) {
+            // The records lie in the constraints' order, not the lanes': ask for the next batch's
+            // while this one's are written.
+            if (bi + 1 < end) {
+                for (int lane = 0; lane < kBatchLanes; ++lane) {
+                    const std::uint32_t next = m_batchLanes[(bi + 1) * kBatchLanes + static_cast<std::size_t>(lane)];
+                    if (next != kNoConstraint) {
+                        __builtin_prefetch(&m_records[next], 1);
+                        __builtin_prefetch(&m_constraintBodies[next]);
+                    }
+                }
+            }
             const ContactBatch& batch = m_batches[bi];
             for (int lane = 0; lane < kBatchLanes; ++lane) {
                 const auto ul = static_cast<std::size_t>(lane);
