@@ -97,6 +97,9 @@ void solveVelocityConstraint(ContactSolver::VelocityConstraint& c, std::span<Sol
     c.acted = c.acted || acted;
 }
 
+/// How many batches ahead finishVelocities() asks for the records it will write.
+constexpr std::size_t kFinishPrefetchBatches = 4;
+
 /// Ends point i of a record with the impulses of the velocity passes; a point that carries a
 /// normal impulse touches.
 void finishRecord(model::ContactRecord& r, std::size_t i, Scalar normalImpulse, Scalar tangentImpulse)
@@ -233,11 +236,13 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
         const auto ug = static_cast<std::size_t>(g);
         const std::size_t end = m_batchGroupStart[ug + 1];
         for (std::size_t bi = m_batchGroupStart[ug]; bi < end; ++bi) {
-            // The records lie in the constraints' order, not the lanes': ask for the next batch's
-            // while this one's are written.
-            if (bi + 1 < end) {
+            // The records lie in the constraints' order, not the lanes': ask for those of a batch
+            // a few ahead while this one's are written (one ahead was too late: the work on a
+            // batch is short).
+            const std::size_t ahead = bi + kFinishPrefetchBatches;
+            if (ahead < end) {
                 for (int lane = 0; lane < kBatchLanes; ++lane) {
-                    const std::uint32_t next = m_batchLanes[(bi + 1) * kBatchLanes + static_cast<std::size_t>(lane)];
+                    const std::uint32_t next = m_batchLanes[ahead * kBatchLanes + static_cast<std::size_t>(lane)];
                     if (next != kNoConstraint) {
                         __builtin_prefetch(&m_records[next], 1);
                         __builtin_prefetch(&m_constraintBodies[next]);
