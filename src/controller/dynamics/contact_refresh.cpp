@@ -20,9 +20,9 @@ namespace {
 /// How many constraints ahead refresh() asks for the memory it will read.
 constexpr std::size_t kRefreshPrefetchAhead = 4;
 
-/// (frameB.apply(anchorB) − frameA.apply(anchorA))·(nx, ny), the same operations in the same order, one
-/// coordinate at a time: built as Vec2s, GCC packed the two coordinates through the stack, and
-/// the wide load waiting on two narrow stores stalled half of refreshConstraint's time.
+/// (frameB.apply(anchorB) − frameA.apply(anchorA))·(nx, ny), the same operations in the same
+/// order, one coordinate at a time: built as Vec2s, GCC packed the two coordinates through the
+/// stack, and the wide load waiting on two narrow stores stalled half of refreshConstraint's time.
 Scalar separationAlong(const Transform& frameA, const Vec2& anchorA, const Transform& frameB, const Vec2& anchorB,
                        Scalar nx, Scalar ny)
 {
