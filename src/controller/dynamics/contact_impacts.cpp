@@ -239,8 +239,8 @@ Approach approachOf(const ContactConstraint& c, const ContactConstraintPoint& p,
 namespace detail {
 
 /// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when none is.
-std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
-                                      const ContactSolver* impacts)
+Scalar fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
+                       const ContactSolver* impacts)
 {
     Scalar fastest = -constants::kRestitutionThreshold;
     bool approaching = false;
@@ -251,7 +251,7 @@ std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<cons
             approaching = true;
         }
     }
-    return approaching ? std::optional<Scalar>(fastest) : std::nullopt;
+    return approaching ? fastest : 0;
 }
 
 } // namespace detail
@@ -285,8 +285,8 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
     const auto consider = [&](std::uint32_t ci) {
         if (pinchedOut(ci))
             return;
-        if (const std::optional<Scalar> fastest = fastestApproach(m_constraints[ci], bodies, h, this)) {
-            heap.push_back({*fastest, ci, m_versions[ci]});
+        if (const Scalar fastest = fastestApproach(m_constraints[ci], bodies, h, this); fastest < 0) {
+            heap.push_back({fastest, ci, m_versions[ci]});
             std::push_heap(heap.begin(), heap.end(), later);
         }
     };

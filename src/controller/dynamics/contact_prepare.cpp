@@ -271,8 +271,8 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
         // at hand.
         startRecord(c, m_records[index]);
         points += static_cast<std::size_t>(c.pointCount);
-        if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
-            m_preparedCandidates[part].push_back({*fastest, index, 0});
+        if (const Scalar fastest = fastestApproach(c, bodies, h); fastest < 0)
+            m_preparedCandidates[part].push_back({fastest, index, 0});
         if (m_batched)
             packLane(bodies, h, part, m_laneOf[index]);
     }

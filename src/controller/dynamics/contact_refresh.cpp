@@ -141,8 +141,8 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i)
         c.points[i].carriesLoad = loaded;
 
-    if (const std::optional<Scalar> fastest = fastestApproach(c, bodies, h))
-        m_preparedCandidates[part].push_back({*fastest, index, 0});
+    if (const Scalar fastest = fastestApproach(c, bodies, h); fastest < 0)
+        m_preparedCandidates[part].push_back({fastest, index, 0});
     if (!m_batched)
         return; // warmStart() packs the velocity passes' data from the constraint
 

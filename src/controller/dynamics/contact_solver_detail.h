@@ -113,12 +113,14 @@ inline PositionCorrection positionCorrection(const ContactConstraint& c, const C
 /// The tangent of a contact: the normal turned clockwise, so (n, t) is a right-handed pair.
 inline Vec2 tangentOf(const Vec2& n) { return Vec2(n.y(), -n.x()); }
 
-/// The fastest approach among c's points that is an impact this step, m/s (< 0); nothing when
-/// none is (contact_impacts.cpp). Within the impact pass, `impacts` is the solver whose impacts
-/// have already struck some bodies: a struck body's contacts then close from the gap left at its
-/// last impact (nullptr before any impact: from the step's start).
-std::optional<Scalar> fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
-                                      const ContactSolver* impacts = nullptr);
+/// The fastest approach among c's points that is an impact this step, m/s (< 0); 0 when none is
+/// (contact_impacts.cpp). Within the impact pass, `impacts` is the solver whose impacts have
+/// already struck some bodies: a struck body's contacts then close from the gap left at its last
+/// impact (nullptr before any impact: from the step's start). (A plain number, not an optional:
+/// an optional came back through the stack, its flag written as a byte and read as a word, and
+/// the read waited on the write in every call of the refresh and the build.)
+Scalar fastestApproach(const ContactConstraint& c, std::span<const SolverBody> bodies, Scalar h,
+                       const ContactSolver* impacts = nullptr);
 
 /// The effective-mass matrix K of a contact's normal impulses, 1/kg: for two points the 2×2 matrix
 /// of the block solve; for one, K₁₁ = 1/(its normal mass) and the rest 0.
