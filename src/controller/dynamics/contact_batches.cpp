@@ -1,4 +1,5 @@
 #include "controller/dynamics/contact_batches.h"
+#include "controller/dynamics/prefetch.h"
 
 #include <algorithm>
 #include <cassert>
@@ -106,9 +107,6 @@ struct LanePoses {
         pose.sine = p.sine[lane];
     }
 }
-
-/// Bytes in a cache line.
-constexpr std::size_t kCacheLine = 64;
 
 /// Below this turn (rad) the cosine and sine are updated by the angle-sum formulas with Taylor
 /// polynomials of the turn, whose first neglected terms (δ⁹/9!, δ¹⁰/10!) stay below 1e-17; a
@@ -409,11 +407,8 @@ solvePositionBatchesInPairs(std::span<PositionBatch> batches, std::span<BatchPos
         // The next pair's lines are asked for ahead: a pair's first reads of its batches waited on
         // memory for half the pass's time in the 20 × 20 pyramids, whose batches far outgrow the
         // cache (1.9 → 1.1 ms per step; the velocity passes are slower with it, and go without).
-        if (first + 2 * kBatchPair <= batches.size()) {
-            const auto* next = reinterpret_cast<const char*>(&batches[first + kBatchPair]);
-            for (std::size_t offset = 0; offset < kBatchPair * sizeof(PositionBatch); offset += kCacheLine)
-                __builtin_prefetch(next + offset);
-        }
+        if (first + 2 * kBatchPair <= batches.size())
+            detail::prefetchLines(&batches[first + kBatchPair], kBatchPair * sizeof(PositionBatch));
         PositionBatch* const pair[kBatchPair] = {&batches[first], &batches[first + 1]};
         correctTogether<kBatchPair>(pair, poses, deepest);
     }

@@ -3,6 +3,7 @@
 
 #include "controller/dynamics/contact_solver.h"
 #include "controller/dynamics/contact_solver_detail.h"
+#include "controller/dynamics/prefetch.h"
 
 #include "controller/large_arrays.h"
 #include "controller/transform.h"
@@ -154,12 +155,8 @@ void ContactSolver::numberConstraints(std::span<const PairManifold> manifolds,
 void ContactSolver::prefetchForBuild(std::uint32_t index, std::span<const PairManifold> manifolds,
                                      const std::vector<model::ContactRecord>& previous) const
 {
-    const char* const manifold = reinterpret_cast<const char*>(&manifolds[m_manifoldOf[index]]);
-    for (std::size_t offset = 0; offset < sizeof(PairManifold); offset += 64)
-        __builtin_prefetch(manifold + offset);
-    const char* const constraint = reinterpret_cast<const char*>(&m_constraints[index]);
-    for (std::size_t offset = 0; offset < sizeof(ContactConstraint); offset += 64)
-        __builtin_prefetch(constraint + offset, 1);
+    detail::prefetchObject(manifolds[m_manifoldOf[index]]);
+    detail::prefetchObject<true>(m_constraints[index]);
     __builtin_prefetch(&m_records[index], 1);
     if (m_previousOf[index] != kNoRecord)
         __builtin_prefetch(&previous[m_previousOf[index]]);
@@ -182,11 +179,7 @@ void ContactSolver::buildConstraints(const model::World& world, std::span<const 
             prefetchForBuild(indices[k + kBuildPrefetchAhead], manifolds, previous);
         if (k + kBuildPrefetchAhead / 2 < indices.size()) {
             const PairManifold& later = manifolds[m_manifoldOf[indices[k + kBuildPrefetchAhead / 2]]];
-            for (const std::uint32_t body : {later.bodyA, later.bodyB}) {
-                __builtin_prefetch(&bodies[body]);
-                __builtin_prefetch(&derivatives[body]);
-                __builtin_prefetch(&m_rotations[body]);
-            }
+            prefetchPairBodies(later.bodyA, later.bodyB, bodies, derivatives);
         }
         const std::uint32_t index = indices[k];
         const PairManifold& pm = manifolds[m_manifoldOf[index]];

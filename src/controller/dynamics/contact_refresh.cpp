@@ -5,6 +5,7 @@
 
 #include "controller/dynamics/contact_solver.h"
 #include "controller/dynamics/contact_solver_detail.h"
+#include "controller/dynamics/prefetch.h"
 
 #include "controller/transform.h"
 #include "model/constants.h"
@@ -37,23 +38,17 @@ Scalar separationAlong(const Transform& frameA, const Vec2& anchorA, const Trans
 
 void ContactSolver::prefetchForRefresh(std::uint32_t index) const
 {
-    const ContactConstraint& c = m_constraints[index];
-    const char* const start = reinterpret_cast<const char*>(&c);
-    for (std::size_t offset = 0; offset < sizeof(ContactConstraint); offset += 64)
-        __builtin_prefetch(start + offset, 1);
+    detail::prefetchObject<true>(m_constraints[index]);
     __builtin_prefetch(&m_records[index]);
     if (m_batched) // only a batched step has lanes
         __builtin_prefetch(&m_laneOf[index]);
 }
 
-void ContactSolver::prefetchBodiesForRefresh(std::uint32_t index, std::span<const SolverBody> bodies,
-                                             std::span<const BodyDerivative> derivatives) const
+void ContactSolver::prefetchPairBodies(std::uint32_t bodyA, std::uint32_t bodyB, std::span<const SolverBody> bodies,
+                                       std::span<const BodyDerivative> derivatives) const
 {
-    // Asked for later than the constraint itself, whose first line names the bodies.
-    const ContactConstraint& c = m_constraints[index];
-    for (const std::uint32_t body : {c.bodyA, c.bodyB}) {
-        __builtin_prefetch(&bodies[body]);
-        __builtin_prefetch(reinterpret_cast<const char*>(&bodies[body]) + 64); // hadImpact
+    for (const std::uint32_t body : {bodyA, bodyB}) {
+        detail::prefetchObject(bodies[body]); // both lines: the second has hadImpact and the material
         __builtin_prefetch(&derivatives[body]);
         __builtin_prefetch(&m_rotations[body]);
     }
@@ -71,8 +66,11 @@ void ContactSolver::refresh(std::span<SolverBody> bodies, std::span<const BodyDe
             // them; ask for a later constraint's lines while this one is worked on.
             if (k + kRefreshPrefetchAhead < group.size())
                 prefetchForRefresh(group[k + kRefreshPrefetchAhead]);
-            if (k + kRefreshPrefetchAhead / 2 < group.size())
-                prefetchBodiesForRefresh(group[k + kRefreshPrefetchAhead / 2], bodies, derivatives);
+            if (k + kRefreshPrefetchAhead / 2 < group.size()) {
+                // Asked for later than the constraint itself, whose first line names the bodies.
+                const ContactConstraint& later = m_constraints[group[k + kRefreshPrefetchAhead / 2]];
+                prefetchPairBodies(later.bodyA, later.bodyB, bodies, derivatives);
+            }
             refreshConstraint(group[k], bodies, derivatives, h, part);
         }
     });

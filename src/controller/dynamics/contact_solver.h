@@ -271,11 +271,12 @@ private:
     /// manifold, the constraint itself, its record and the last step's matching record.
     void prefetchForBuild(std::uint32_t index, std::span<const PairManifold> manifolds,
                           const std::vector<model::ContactRecord>& previous) const;
-    /// Asks for the memory refreshConstraint(index) reads: the constraint, its record and lane,
-    /// and (called later, once the constraint's first line is in) its bodies.
+    /// Asks for the memory refreshConstraint(index) reads: the constraint, its record and lane.
     void prefetchForRefresh(std::uint32_t index) const;
-    void prefetchBodiesForRefresh(std::uint32_t index, std::span<const SolverBody> bodies,
-                                  std::span<const BodyDerivative> derivatives) const;
+    /// Asks for what the build and the refresh read of a constraint's two bodies: the solver
+    /// bodies, their derivatives and their rotations.
+    void prefetchPairBodies(std::uint32_t bodyA, std::uint32_t bodyB, std::span<const SolverBody> bodies,
+                            std::span<const BodyDerivative> derivatives) const;
     /// refresh() for constraint `index` of group `part`.
     void refreshConstraint(std::uint32_t index, std::span<SolverBody> bodies,
                            std::span<const BodyDerivative> derivatives, Scalar h, std::size_t part);
