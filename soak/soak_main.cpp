@@ -169,10 +169,15 @@ int main(int argc, char** argv)
                   << " s: " << result.finding->detail << "; scene "
                   << (error ? "not written: " + *error : "written to " + file.string()) << std::endl;
     }
-    std::cout << "impetus-soak: " << options.scenes << " scenes from seed " << options.firstSeed << ", "
+    std::cout << "impetus-soak: " << options.scenes << (options.scenes == 1 ? " scene" : " scenes") << " from seed "
+              << options.firstSeed << ", "
               << options.time << " s each: " << findings << " with a new finding, " << knownFindings
-              << " with a known one; largest energy growth "
-              << largestGrowth << " of the energy above the box's floor (seed " << largestGrowthSeed
-              << "; bound " << soak::kEnergyGrowthBound << ")" << std::endl;
+              << " with a known one; ";
+    if (largestGrowth > 0)
+        std::cout << "largest energy growth " << largestGrowth << " of the energy above the box's floor (seed "
+                  << largestGrowthSeed << "; bound " << soak::kEnergyGrowthBound << ")" << std::endl;
+    else
+        std::cout << "no scene's energy grew above the box's floor (bound " << soak::kEnergyGrowthBound << ")"
+                  << std::endl;
     return findings == 0 ? 0 : 1;
 }
