@@ -8,7 +8,8 @@
 
 namespace impetus::controller::detail {
 
-/// Bytes in a cache line of the processors the engine is built for (x86-64 and AArch64 alike).
+/// Bytes in a cache line: 64 on x86-64 and most AArch64 processors. Where a line is longer (128 on
+/// some AArch64), a line is asked for more than once, which costs little and changes nothing.
 inline constexpr std::size_t kCacheLine = 64;
 
 /// Asks for every cache line of the `bytes` bytes from `start`: to be read, or, with ForWrite, to
