@@ -79,6 +79,9 @@ Scalar unitDiscEntry(const Vec2& from, const Vec2& d)
 /// them.
 constexpr std::size_t kFewFixedBodies = 16;
 
+/// How many bodies ahead keepOut's walk over the bodies asks for their lines.
+constexpr std::size_t kBodyPrefetchAhead = 8;
+
 /// A pose with finite numbers: a path with a NaN in it is no path (and the step's NaN check names
 /// the body; the guard must not hide it, nor spread it to the bodies it would put back).
 bool finite(const model::BodyState& state) { return state.position.allFinite() && std::isfinite(state.angle); }
@@ -157,20 +160,7 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
     // fixed and the fixed bodies not, so that it pairs each path with the fixed bodies it may
     // meet and never with another path (a pile's thousands of neighbours); the few pairs of fixed
     // bodies that touch (a box's walls at its corners) are skipped below.
-    const std::size_t bodyCount = world.bodies.size();
-    for (std::size_t i = 0; i < bodyCount; ++i) {
-        const model::Body& body = world.bodies[i];
-        if (!body.fixed || !finite(start[i]) || !finite(end[i]))
-            continue; // a fixed body with no place puts nothing back (NaN would spread)
-        const Transform from = Transform::of(start[i]);
-        const Transform to = Transform::of(end[i]);
-        m_proxies.push_back(BroadPhaseProxy{Aabb::merged(boxAt(body, from), boxAt(body, to)), static_cast<std::uint32_t>(i), false});
-        m_fixedPoses.push_back({from, to});
-    }
-    const std::size_t fixedCount = m_proxies.size();
-    m_keptOut.clear();
-    if (fixedCount == 0)
-        return 0;
+    m_paths.clear();
     // Each path's box is padded by its body's size, which the guard needs not but the broad
     // phase's cache does: a box of a body at rest is a point, and a point's fat box (a fraction of
     // its size larger) holds nothing that moves.
@@ -179,11 +169,33 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
         const Vec2& b = end[entry].position;
         return Aabb{a.cwiseMin(b) - Vec2::Constant(pad), a.cwiseMax(b) + Vec2::Constant(pad)};
     };
+    // One walk over the bodies gives the fixed bodies' boxes and the paths' (which follow them in
+    // m_proxies): a body is seven cache lines, and the walk waits on the two it reads (the flags
+    // and the bounding radius), so it asks for a later body's while it works on this one.
+    const std::size_t bodyCount = world.bodies.size();
     for (std::size_t i = 0; i < bodyCount; ++i) {
+        if (i + kBodyPrefetchAhead < bodyCount) {
+            const model::Body& later = world.bodies[i + kBodyPrefetchAhead];
+            __builtin_prefetch(&later.fixed);
+            __builtin_prefetch(&later.geometry.boundingRadius);
+        }
         const model::Body& body = world.bodies[i];
-        if (!body.fixed && !body.soft && finite(start[i]) && finite(end[i]))
-            m_proxies.push_back(BroadPhaseProxy{pathBox(i, body.geometry.boundingRadius), static_cast<std::uint32_t>(i), true});
+        if (!finite(start[i]) || !finite(end[i]))
+            continue; // a fixed body with no place puts nothing back (NaN would spread)
+        if (body.fixed) {
+            const Transform from = Transform::of(start[i]);
+            const Transform to = Transform::of(end[i]);
+            m_proxies.push_back(BroadPhaseProxy{Aabb::merged(boxAt(body, from), boxAt(body, to)), static_cast<std::uint32_t>(i), false});
+            m_fixedPoses.push_back({from, to});
+        } else if (!body.soft) {
+            m_paths.push_back(BroadPhaseProxy{pathBox(i, body.geometry.boundingRadius), static_cast<std::uint32_t>(i), true});
+        }
     }
+    const std::size_t fixedCount = m_proxies.size();
+    m_keptOut.clear();
+    if (fixedCount == 0)
+        return 0;
+    m_proxies.insert(m_proxies.end(), m_paths.begin(), m_paths.end());
     std::size_t entry = bodyCount;
     for (const model::SoftGrid& grid : world.softBodies) {
         const Scalar pad = grid.semiAxes().maxCoeff();

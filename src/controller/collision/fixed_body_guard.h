@@ -55,6 +55,7 @@ public:
 
 private:
     std::vector<BroadPhaseProxy> m_proxies; ///< the fixed bodies' boxes, then the paths' boxes
+    std::vector<BroadPhaseProxy> m_paths; ///< the paths' boxes, gathered beside the fixed bodies'
     std::vector<ProxyPair> m_pairs;
     /// Per fixed body (its proxy's index), its poses at the substep's start and end.
     struct FixedPose {
