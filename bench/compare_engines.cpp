@@ -738,7 +738,8 @@ void printImpetusPhases(const Run& run)
               << fixed(p.velocityMs / n, 3) << ", positions " << fixed(p.positionMs / n, 3) << "), events "
               << fixed(p.eventsMs / n, 3) << "; total " << fixed(p.totalMs / n, 3) << " ("
               << fixed(p.totalMs / n / run.timeStep, 1) << " per simulated s); " << fixed(p.substeps / n, 2)
-              << " substeps, " << fixed(p.collisionPasses / n, 2) << " collision passes, " << fixed(p.contacts / n, 0) << " contacts, " << fixed(p.impacts / n, 1)
+              << " substeps, " << fixed(p.collisionPasses / n, 2) << " collision passes, " << fixed(p.contacts / n, 0) << " contacts ("
+              << fixed(p.batchLanes / n, 0) << " batch lanes), " << fixed(p.impacts / n, 1)
               << " impacts per step\n";
 }
 

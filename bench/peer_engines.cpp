@@ -379,6 +379,7 @@ void ImpetusEngine::step()
     m_profileSum.eventsMs += last.eventsMs;
     m_profileSum.totalMs += last.totalMs;
     m_profileSum.contacts += last.contacts;
+    m_profileSum.batchLanes += last.batchLanes;
     m_profileSum.impacts += last.impacts;
     m_profileSum.substeps += last.substeps;
     m_profileSum.collisionPasses += last.collisionPasses;
