@@ -2,6 +2,7 @@
 // two side by side (contact_batches.h, BatchOrder).
 
 #include "controller/dynamics/contact_batches.h"
+#include "controller/dynamics/small_turn.h"
 
 #include <gtest/gtest.h>
 
@@ -165,6 +166,59 @@ TEST(ContactBatches, PairsGiveTheSameBitsAsOneBatchAtATime)
             }
             EXPECT_EQ(alone.batches[bi].acted[lane], paired.batches[bi].acted[lane]);
         }
+    }
+}
+
+// The small turns that keep a pose's cosine and sine up to date (small_turn.h): within a few
+// units in the last place of std::cos and std::sin of the turned angle, for one number and for
+// every lane of a vector, over turns up to the largest they are used for, one after another as
+// the substeps of a step and a position pass's looks apply them.
+TEST(SmallTurn, MatchesTheCosineAndSineOfTheTurnedAngle)
+{
+    constexpr double kUlps = 4e-16; // a few units in the last place of a number near 1
+    std::mt19937 random(7);
+    const auto uniform = [&](double low, double high) {
+        return low + (high - low) * static_cast<double>(random()) / 4294967296.0;
+    };
+    double worst = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        // The angle is summed in long double, so that the reference is the turned angle's and not
+        // that of a sum rounded to double (whose rounding near 10 rad alone is 1e-15).
+        long double angle = uniform(-10, 10);
+        double cosine = std::cos(static_cast<double>(angle));
+        double sine = std::sin(static_cast<double>(angle));
+        // Four turns in a row, as a body's rotation is carried through the substeps of a step.
+        for (int k = 0; k < 4; ++k) {
+            const double delta = uniform(-detail::kSmallTurn, detail::kSmallTurn);
+            detail::turnSmall(cosine, sine, delta);
+            angle += delta;
+            worst = std::max({worst, std::abs(cosine - static_cast<double>(std::cos(angle))),
+                              std::abs(sine - static_cast<double>(std::sin(angle)))});
+        }
+    }
+    EXPECT_LT(worst, 4 * kUlps); // four turns, each within a few ulps
+    EXPECT_GT(worst, 0.0); // rounding does show: the comparison is with another computation
+
+    // Each lane of a vector gets exactly the arithmetic of one number.
+    Lanes cosines{};
+    Lanes sines{};
+    Lanes deltas{};
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        cosines[lane] = std::cos(0.3 * lane);
+        sines[lane] = std::sin(0.3 * lane);
+        deltas[lane] = detail::kSmallTurn * (lane - 1.5) / 1.5;
+    }
+    Lanes turnedCosines = cosines;
+    Lanes turnedSines = sines;
+    detail::turnSmall(turnedCosines, turnedSines, deltas);
+    for (int lane = 0; lane < kBatchLanes; ++lane) {
+        double cosine = cosines[lane];
+        double sine = sines[lane];
+        detail::turnSmall(cosine, sine, deltas[lane]);
+        EXPECT_TRUE(sameBits(turnedCosines[lane], cosine)) << "lane " << lane;
+        EXPECT_TRUE(sameBits(turnedSines[lane], sine)) << "lane " << lane;
+        EXPECT_NEAR(cosine, std::cos(0.3 * lane + deltas[lane]), kUlps);
+        EXPECT_NEAR(sine, std::sin(0.3 * lane + deltas[lane]), kUlps);
     }
 }
 

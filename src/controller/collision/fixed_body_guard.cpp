@@ -170,13 +170,15 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
         return Aabb{a.cwiseMin(b) - Vec2::Constant(pad), a.cwiseMax(b) + Vec2::Constant(pad)};
     };
     // One walk over the bodies gives the fixed bodies' boxes and the paths' (which follow them in
-    // m_proxies): a body is seven cache lines, and the walk waits on the two it reads (the flags
-    // and the bounding radius), so it asks for a later body's while it works on this one.
+    // m_proxies): a body is seven cache lines, and the walk waits on the three it reads (the two
+    // flags and the bounding radius), so it asks for a later body's while it works on this one.
     const std::size_t bodyCount = world.bodies.size();
     for (std::size_t i = 0; i < bodyCount; ++i) {
         if (i + kBodyPrefetchAhead < bodyCount) {
             const model::Body& later = world.bodies[i + kBodyPrefetchAhead];
             __builtin_prefetch(&later.fixed);
+            // The optional's flag lies at its end, a cache line past `fixed`.
+            __builtin_prefetch(reinterpret_cast<const char*>(&later.soft) + sizeof(later.soft) - 1);
             __builtin_prefetch(&later.geometry.boundingRadius);
         }
         const model::Body& body = world.bodies[i];

@@ -1,5 +1,6 @@
 #include "controller/dynamics/contact_batches.h"
 #include "controller/dynamics/prefetch.h"
+#include "controller/dynamics/small_turn.h"
 
 #include <algorithm>
 #include <cassert>
@@ -108,37 +109,13 @@ struct LanePoses {
     }
 }
 
-/// Below this turn (rad) the cosine and sine are updated by the angle-sum formulas with Taylor
-/// polynomials of the turn, whose first neglected terms (δ⁹/9!, δ¹⁰/10!) stay below 1e-17; a
-/// larger turn takes std::cos and std::sin of the new angle.
-constexpr Scalar kSmallTurn = 0.05;
-
-/// The Taylor coefficients of sin δ = δ Σ sₖ δ²ᵏ and cos δ = Σ cₖ δ²ᵏ that turn() uses: 1/n! with
-/// its sign, as constants, so that the polynomials cost multiplications alone (written as
-/// divisions by 6, 20, 42…, they compiled to seven divisions a turn, four turns a batch).
-constexpr Scalar kSin3 = -1.0 / 6;
-constexpr Scalar kSin5 = 1.0 / 120;
-constexpr Scalar kSin7 = -1.0 / 5040;
-constexpr Scalar kCos2 = -1.0 / 2;
-constexpr Scalar kCos4 = 1.0 / 24;
-constexpr Scalar kCos6 = -1.0 / 720;
-constexpr Scalar kCos8 = 1.0 / 40320;
-
 /// Turns the poses by δ, keeping their cosine and sine up to date.
 [[gnu::always_inline]] inline void turn(LanePoses& p, const Lanes& delta)
 {
     p.angle += delta;
-    const Lanes d2 = delta * delta;
-    // Horner's rule in δ²: the rounding of each coefficient (a relative 1e-16) is multiplied by
-    // δ² ≤ 0.0025 at least, far below the first neglected term.
-    const Lanes sinDelta = delta + delta * (d2 * (kSin3 + d2 * (kSin5 + d2 * kSin7)));
-    const Lanes cosDelta = 1 + d2 * (kCos2 + d2 * (kCos4 + d2 * (kCos6 + d2 * kCos8)));
-    const Lanes cosine = p.cosine * cosDelta - p.sine * sinDelta;
-    const Lanes sine = p.sine * cosDelta + p.cosine * sinDelta;
-    p.cosine = cosine;
-    p.sine = sine;
+    detail::turnSmall(p.cosine, p.sine, delta);
     for (int lane = 0; lane < kBatchLanes; ++lane) {
-        if (std::abs(delta[lane]) > kSmallTurn) {
+        if (std::abs(delta[lane]) > detail::kSmallTurn) {
             p.cosine[lane] = std::cos(p.angle[lane]);
             p.sine[lane] = std::sin(p.angle[lane]);
         }

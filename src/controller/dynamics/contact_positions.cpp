@@ -15,10 +15,11 @@ namespace impetus::controller {
 namespace {
 
 /// One non-linear Gauss–Seidel update of one constraint's positions. `rotations` holds every
-/// body's cos and sin of its current angle, kept up to date here when a body turns. Returns the
+/// body's cos and sin of its current angle, kept up to date here when a body turns (with the angle
+/// they are of in `rotationAngles`, which ContactSolver::turnRotations reads). Returns the
 /// deepest separation it saw (≤ 0), m. Adds the linear position impulse it applied to `push`.
 Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody> bodies, std::span<Vec2> rotations,
-                               Vec2& push)
+                               std::span<Scalar> rotationAngles, Vec2& push)
 {
     Scalar deepest = 0;
     SolverBody& a = bodies[c.bodyA];
@@ -34,10 +35,14 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
         push += look.impulse;
         // A resting point within the slop moves nothing: the sine and cosine are computed again
         // only for a body that turned, not at every look.
-        if (movable(a))
+        if (movable(a)) {
             rotations[c.bodyA] = Vec2(std::cos(a.angle), std::sin(a.angle));
-        if (movable(b))
+            rotationAngles[c.bodyA] = a.angle;
+        }
+        if (movable(b)) {
             rotations[c.bodyB] = Vec2(std::cos(b.angle), std::sin(b.angle));
+            rotationAngles[c.bodyB] = b.angle;
+        }
     }
     return deepest;
 }
@@ -106,7 +111,7 @@ bool ContactSolver::solvePositions(std::span<SolverBody> bodies, bool turnedElse
     forEachGroupIndex([&](std::span<const std::uint32_t> group, int index) {
         Scalar groupDeepest = 0;
         for (const std::uint32_t ci : group)
-            groupDeepest = std::min(groupDeepest, solvePositionConstraint(m_constraints[ci], bodies, m_rotations, m_pushes[ci]));
+            groupDeepest = std::min(groupDeepest, solvePositionConstraint(m_constraints[ci], bodies, m_rotations, m_rotationAngles, m_pushes[ci]));
         deepest[static_cast<std::size_t>(index)] = groupDeepest;
     });
     // Allow a little more than the slop before calling it solved, as the iterations converge
@@ -120,12 +125,16 @@ bool ContactSolver::solvePositionsInBatches(std::span<SolverBody> bodies, bool t
     // may have moved them; the passes keep both up to date, and hand the poses back after each
     // pass. Each half of a split world does its own bodies.
     // They are kept by slot, as the velocities are (assignSlots).
+    // Their cosines and sines are the rotations the substep began with, turned by what the bodies
+    // turned since (turnRotations).
     if (turnedElsewhere) {
+        turnRotations(bodies, m_split);
         inSlotHalves(m_bodyOfSlot.size(), [&](std::size_t begin, std::size_t end) {
             for (std::size_t slot = begin; slot < end; ++slot) {
-                const SolverBody& body = bodies[m_bodyOfSlot[slot]];
-                m_poses[slot] = BatchPose{body.position.x(), body.position.y(), body.angle, std::cos(body.angle),
-                                          std::sin(body.angle)};
+                const std::uint32_t index = m_bodyOfSlot[slot];
+                const SolverBody& body = bodies[index];
+                const Vec2& rotation = m_rotations[index];
+                m_poses[slot] = BatchPose{body.position.x(), body.position.y(), body.angle, rotation.x(), rotation.y()};
             }
         });
     }

@@ -56,7 +56,7 @@ void ContactSolver::prefetchPairBodies(std::uint32_t bodyA, std::uint32_t bodyB,
 
 void ContactSolver::refresh(std::span<SolverBody> bodies, std::span<const BodyDerivative> derivatives, Scalar h)
 {
-    computeRotations(bodies, m_split);
+    turnRotations(bodies, m_split); // prepare() took them afresh at the step's first substep
     runGroups([&](int g) {
         const auto part = static_cast<std::size_t>(g);
         m_preparedCandidates[part].clear();

@@ -280,8 +280,14 @@ private:
     /// refresh() for constraint `index` of group `part`.
     void refreshConstraint(std::uint32_t index, std::span<SolverBody> bodies,
                            std::span<const BodyDerivative> derivatives, Scalar h, std::size_t part);
-    /// Fills m_rotations with every body's (cos, sin) of its angle.
+    /// Fills m_rotations with every body's (cos, sin) of its angle, and m_rotationAngles with
+    /// the angles they are of.
     void computeRotations(std::span<const SolverBody> bodies, bool split);
+    /// Brings m_rotations up to every body's angle from the angles computeRotations (or this) last
+    /// saw: a body that turned by less than detail::kSmallTurn since is turned by the Taylor
+    /// polynomials (small_turn.h), as the batched position passes turn their poses; a larger turn
+    /// takes std::cos and std::sin. Only after computeRotations in the same step, for the same bodies.
+    void turnRotations(std::span<const SolverBody> bodies, bool split);
     /// Runs solve(group, index) over the groups of partition(): groups 0 and 1 side by side when
     /// the world is split, then group 2.
     void runGroups(const std::function<void(int)>& solve);
@@ -433,6 +439,7 @@ private:
     std::vector<std::pair<Scalar, std::uint32_t>> m_sortKeys;
     std::vector<VelocityConstraint> m_velocityConstraints; ///< in solving order
     std::vector<Vec2> m_rotations; ///< per body: (cos, sin) of its angle, in the position passes
+    std::vector<Scalar> m_rotationAngles; ///< per body: the angle m_rotations holds the cos and sin of, rad
     std::array<std::size_t, 4> m_groupStart{}; ///< where each group starts in m_velocityConstraints
     TaskPair* m_tasks = nullptr; ///< the second thread, if any (see useTasks)
 
