@@ -108,8 +108,8 @@ struct PositionBatch {
     std::array<Anchors, 2> anchors{};
     LaneMask secondPoint{}; ///< the lane's contact has a second point
     /// The linear position impulse the passes of this substep have applied, summed over its
-    /// points, m·kg: what ContactSolver::measurePushes reads. Cleared by packLane and
-    /// ContactSolver::beginPositions.
+    /// points, m·kg: what ContactSolver::measurePushes reads. Cleared by packLane and by
+    /// ContactSolver::beginPositions where they will be measured (elsewhere they run on unread).
     Lanes pushX{};
     Lanes pushY{};
     /// Each lane's bodies, as indices into the poses; a fixed body writes to a scratch pose.

@@ -8,6 +8,7 @@
 #include "model/constants.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace impetus::controller {
@@ -49,12 +50,15 @@ Scalar solvePositionConstraint(const ContactConstraint& c, std::span<SolverBody>
 
 } // namespace
 
-void ContactSolver::beginPositions()
+void ContactSolver::beginPositions(bool measured)
 {
+    m_pushesMeasured = measured;
     if (!m_batched) {
         m_pushes.assign(m_constraints.size(), Vec2::Zero());
         return;
     }
+    if (!measured)
+        return; // the passes add to stale pushes, which nothing reads
     for (PositionBatch& batch : m_positionBatches) {
         batch.pushX = Lanes{};
         batch.pushY = Lanes{};
@@ -65,6 +69,7 @@ void ContactSolver::measurePushes(std::span<const SolverBody> bodies)
 {
     // What each contact's position passes changed in the angular momentum, from the velocities
     // they saw: all are measured before any is answered (takeBackPushes).
+    assert(m_pushesMeasured);
     m_pushedPairs.clear();
     const auto look = [&](std::uint32_t ci, const Vec2& push) {
         if (push.isZero())

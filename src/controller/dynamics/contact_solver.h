@@ -195,10 +195,13 @@ public:
     /// since this solver's last pass (the first pass of a step, or joints in between). Returns
     /// true when every penetration is within the slop.
     bool solvePositions(std::span<SolverBody> bodies, bool turnedElsewhere);
-    /// Before a substep's position passes: clears what they will have pushed.
-    void beginPositions();
+    /// Before a substep's position passes: clears what they will have pushed, when `measured`
+    /// (measurePushes will read it). A large world under gravity, whose pushes nobody reads, does
+    /// not go through every position batch for it.
+    void beginPositions(bool measured);
     /// After them: measures, contact by contact, what their moving the bodies did to the angular
-    /// momentum, P × (v_B − v_A). Contacts with a fixed body are left alone.
+    /// momentum, P × (v_B − v_A). Contacts with a fixed body are left alone. Only after
+    /// beginPositions(true).
     void measurePushes(std::span<const SolverBody> bodies);
     /// Then takes each back by turning the pushed pair's relative velocity
     /// (restoreAngularMomentum; docs/physics.md, "Conservation").
@@ -370,6 +373,7 @@ private:
     /// passes, m·kg (a batched step keeps them in its position batches).
     std::vector<Vec2> m_pushes;
     std::vector<PushedPair> m_pushedPairs; ///< measurePushes's findings
+    bool m_pushesMeasured = false; ///< the last beginPositions cleared the pushes
 
     std::vector<std::uint32_t> m_struckBodies; ///< the bodies this step's impacts struck, once each
     std::vector<ContactConstraint> m_constraints;
