@@ -67,9 +67,16 @@ void ContactSolver::refresh(std::span<SolverBody> bodies, std::span<const BodyDe
             if (k + kRefreshPrefetchAhead < group.size())
                 prefetchForRefresh(group[k + kRefreshPrefetchAhead]);
             if (k + kRefreshPrefetchAhead / 2 < group.size()) {
-                // Asked for later than the constraint itself, whose first line names the bodies.
-                const ContactConstraint& later = m_constraints[group[k + kRefreshPrefetchAhead / 2]];
+                // Asked for later than the constraint itself, whose first line names the bodies,
+                // and whose lane (asked for with it) names the batch whose gaps it writes.
+                const std::uint32_t index = group[k + kRefreshPrefetchAhead / 2];
+                const ContactConstraint& later = m_constraints[index];
                 prefetchPairBodies(later.bodyA, later.bodyB, bodies, derivatives);
+                if (m_batched) {
+                    const ContactBatch& batch = m_batches[m_laneOf[index] / kBatchLanes];
+                    __builtin_prefetch(&batch.points[0].gapSpeed, 1);
+                    __builtin_prefetch(&batch.points[1].gapSpeed, 1);
+                }
             }
             refreshConstraint(group[k], bodies, derivatives, h, part);
         }
