@@ -183,7 +183,7 @@ int FixedBodyGuard::keepOut(const model::World& world, std::span<const model::Bo
         }
         const model::Body& body = world.bodies[i];
         if (!finite(start[i]) || !finite(end[i]))
-            continue; // a fixed body with no place puts nothing back (NaN would spread)
+            continue; // no place: a fixed body puts nothing back, a moving one has no path (NaN would spread)
         if (body.fixed) {
             const Transform from = Transform::of(start[i]);
             const Transform to = Transform::of(end[i]);

@@ -6,8 +6,6 @@
 
 #include "model/scalar.h"
 
-#include <cmath>
-
 namespace impetus::controller::detail {
 
 /// Below this turn (rad) the cosine and sine are updated by the angle-sum formulas with Taylor
