@@ -156,12 +156,22 @@ TEST(SolverSubsteps, FastSpinsSplitStepsWithContactsToAnEighthOfATurn)
 // more than 0.1 rad in a substep: a light body that a heavy one drives against a wall meets its
 // contact rows, linear in its spin, by spinning (soak seed 4386: a 54 g ellipse at 148 rad/s on a
 // rod to a 0.59 kg one went through the ceiling at 0.6 rad a substep). The same spins in a world
-// of like masses split at an eighth of a turn.
+// of like masses split at an eighth of a turn. Among free bodies of unlike masses only a heavy
+// body touching a light one drives it: only the light bodies of such contacts are held to 0.1 rad
+// (a rain of polygons, whose smallest spun at up to 80 rad/s, split its whole world's step of
+// 1/60 s into 14 substeps for them: six times its median step).
 TEST(SolverSubsteps, FastSpinsAmongUnlikeMassesSplitStepsToATenthOfARadian)
 {
     model::World world = makeEmptyWorld(IntegratorKind::Rk4, 1.0 / 240.0, Vec2::Zero());
     world.bodies.push_back(makeBox("box", 1.0, 0.5, 0.1, Vec2(0, 5)));
     world.bodies.push_back(makeBall("ball", 1.0, 0.1, Vec2(50, 5)));
+    world.bodies.push_back(makeBall("anchor", 1.0, 0.1, Vec2(60, 5)));
+    // A spring between the two balls: the world has something that can drive a light body.
+    model::Spring spring;
+    spring.bodyA = model::BodyId{1};
+    spring.bodyB = model::BodyId{2};
+    spring.restLength = 10;
+    world.springs.push_back(spring);
     const Scalar rate = 0.23 * 240; // rad/s: 0.23 rad a step of 1/240 s, 0.92 rad a step of 1/60 s
     world.bodies[0].state.angularVelocity = rate;
     EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1); // like masses: an eighth of a turn, 0.785 rad
@@ -169,6 +179,35 @@ TEST(SolverSubsteps, FastSpinsAmongUnlikeMassesSplitStepsToATenthOfARadian)
     world.bodies[1] = makeBall("ball", 10.5, 0.1, Vec2(50, 5)); // 10.5 times the box
     EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 3);
     EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 10);
+    // Without the spring the same masses are free bodies, 50 m apart: the eighth of a turn again.
+    world.springs.clear();
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 2);
+    // Touching (as the last step ended), the heavy ball can drive the box: 0.1 rad for the box.
+    model::ContactRecord touch;
+    touch.bodyA = model::BodyId{0};
+    touch.bodyB = model::BodyId{1};
+    touch.pointCount = 1;
+    touch.touching = true;
+    world.contacts.push_back(touch);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 3);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 60.0), 10);
+    // The heavy body's own spin is not held to it (a ball turns freely; a heavy box keeps the
+    // eighth): the box at rest and the ball spinning leave the step whole.
+    world.bodies[0].state.angularVelocity = 0;
+    world.bodies[1].state.angularVelocity = rate;
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
+    world.bodies[0].state.angularVelocity = rate;
+    world.bodies[1].state.angularVelocity = 0;
+    world.contacts.clear();
+    // A joint drives as a spring does.
+    model::Joint rod;
+    rod.type = model::JointType::Rod;
+    rod.bodyA = model::BodyId{1};
+    rod.bodyB = model::BodyId{2};
+    rod.length = 10;
+    world.joints.push_back(rod);
+    EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 3);
     world.bodies[1] = makeBall("ball", 9.5, 0.1, Vec2(50, 5)); // within ten times
     EXPECT_EQ(spinSubsteps(world, 1.0 / 240.0), 1);
     // A fixed body's mass does not count: a light box beside a heavy wall is not unlike anything.
