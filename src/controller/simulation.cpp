@@ -901,7 +901,9 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
         onSoftAggregates([&] { m_jointSolver.solveVelocities(m_bodies, h); });
         m_contactSolver.solveVelocities(m_bodies);
     }
-    m_contactSolver.finishVelocities(m_bodies);
+    // The records only where something reads them before the next substep's passes: the
+    // substep that hands them on, and the ledger.
+    m_contactSolver.finishVelocities(m_bodies, handOver || m_ledger != nullptr);
     if (guardEnergy)
         holdContactEnergy(kineticBefore, h);
     // Small jointed islands of very unlike masses, which the passes cannot settle, solved whole;

@@ -39,6 +39,10 @@ struct alignas(64) BatchBody {
     Scalar angularVelocity = 0; ///< rad/s
     Scalar invMass = 0; ///< 1/kg
     Scalar invInertia = 0; ///< 1/(kg·m²)
+    /// A contact force acted on the body in this substep's passes (set by
+    /// ContactSolver::finishVelocities, handed on as SolverBody::hadContactForce). Not read by
+    /// the passes.
+    bool contactForce = false;
 };
 
 /// One contact point of every lane. The arms are the lever arms' cross products with the

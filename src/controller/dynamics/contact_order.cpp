@@ -144,6 +144,7 @@ void ContactSolver::copyVelocitiesIn(std::span<const SolverBody> bodies)
             copy.angularVelocity = body.angularVelocity;
             copy.invMass = body.invMass;
             copy.invInertia = body.invInertia;
+            copy.contactForce = false;
         }
     });
 }
@@ -157,6 +158,7 @@ void ContactSolver::copyVelocitiesOut(std::span<SolverBody> bodies)
             SolverBody& body = bodies[m_bodyOfSlot[slot]];
             body.velocity = m_batchBodies[slot].velocity;
             body.angularVelocity = m_batchBodies[slot].angularVelocity;
+            body.hadContactForce = body.hadContactForce || m_batchBodies[slot].contactForce;
         }
     });
 }

@@ -110,6 +110,7 @@ void ContactSolver::prepare(const model::World& world, std::span<const PairManif
     if (m_batched) {
         resizeLarge(m_batches, m_batchLanes.size() / kBatchLanes);
         resizeLarge(m_positionBatches, m_batches.size());
+        m_touched.assign(m_batches.size(), 0);
     }
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);

@@ -65,7 +65,7 @@ void ContactSolver::findProps(std::span<const SolverBody> bodies)
         // none, and fetching them cost the base-100 pyramid 3 % of its step).
         const bool aLight = a.invMass > 0 && a.invMass >= kPropMassRatio * b.invMass;
         const bool bLight = b.invMass > 0 && b.invMass >= kPropMassRatio * a.invMass;
-        if ((!aLight && !bLight) || !movable(a) || !movable(b) || !m_records[ci].touching)
+        if ((!aLight && !bLight) || !movable(a) || !movable(b) || !touching(ci))
             continue;
         // A soft body's ellipse may be a prop (each is rigid: a soft body crushed under a tonne
         // down to its ellipses holds there), and may be the heavy body too: a soft ball of 450 kg
@@ -93,7 +93,7 @@ void ContactSolver::findProps(std::span<const SolverBody> bodies)
         const std::uint32_t ib = m_constraintBodies[ci][1];
         const bool fixedA = !movable(bodies[ia]);
         const bool fixedB = !movable(bodies[ib]);
-        if (fixedA == fixedB || !m_records[ci].touching)
+        if (fixedA == fixedB || !touching(ci))
             continue;
         const std::uint32_t held = fixedA ? ib : ia;
         if (!std::binary_search(light.begin(), light.end(), held))

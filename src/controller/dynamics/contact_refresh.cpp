@@ -39,9 +39,10 @@ Scalar separationAlong(const Transform& frameA, const Vec2& anchorA, const Trans
 void ContactSolver::prefetchForRefresh(std::uint32_t index) const
 {
     detail::prefetchObject<true>(m_constraints[index]);
-    __builtin_prefetch(&m_records[index]);
-    if (m_batched) // only a batched step has lanes
+    if (m_batched) // only a batched step has lanes, which hold its impulses
         __builtin_prefetch(&m_laneOf[index]);
+    else
+        __builtin_prefetch(&m_records[index]);
 }
 
 void ContactSolver::prefetchPairBodies(std::uint32_t bodyA, std::uint32_t bodyB, std::span<const SolverBody> bodies,
@@ -73,9 +74,12 @@ void ContactSolver::refresh(std::span<SolverBody> bodies, std::span<const BodyDe
                 const ContactConstraint& later = m_constraints[index];
                 prefetchPairBodies(later.bodyA, later.bodyB, bodies, derivatives);
                 if (m_batched) {
+                    // The lane's impulses (read) and gaps (written) lie on two lines of each point.
                     const ContactBatch& batch = m_batches[m_laneOf[index] / kBatchLanes];
-                    __builtin_prefetch(&batch.points[0].gapSpeed, 1);
-                    __builtin_prefetch(&batch.points[1].gapSpeed, 1);
+                    for (const BatchPoint& point : batch.points) {
+                        __builtin_prefetch(&point.normalImpulse);
+                        __builtin_prefetch(&point.gapSpeed, 1);
+                    }
                 }
             }
             refreshConstraint(group[k], bodies, derivatives, h, part);
@@ -115,7 +119,12 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
         ny = n.y();
     }
 
-    const model::ContactRecord& record = m_records[index];
+    // The last substep's passes ended with these impulses: a batched step keeps them in its lanes
+    // (its records are written only at the step's end), an unbatched one in its records
+    // (finishVelocities wrote them).
+    const std::uint32_t laneIndex = m_batched ? m_laneOf[index] : 0;
+    const std::size_t bi = laneIndex / kBatchLanes;
+    const auto lane = static_cast<int>(laneIndex % kBatchLanes);
     const BodyDerivative& da = derivatives[c.bodyA];
     const BodyDerivative& db = derivatives[c.bodyB];
     bool loaded = false;
@@ -133,9 +142,13 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
         const Vec2 accB = db.acceleration + cross(db.angularAcceleration, p.rB);
         p.normalAcceleration = (accB - accA).dot(c.normal);
         p.startNormalVelocity = relativeVelocity(a, b, p.rA, p.rB).dot(c.normal);
-        // The last substep's passes ended with these (finishVelocities wrote them to the record).
-        p.normalImpulse = record.normalImpulses[i];
-        p.tangentImpulse = record.tangentImpulses[i];
+        if (m_batched) {
+            p.normalImpulse = m_batches[bi].points[i].normalImpulse[lane];
+            p.tangentImpulse = m_batches[bi].points[i].tangentImpulse[lane];
+        } else {
+            p.normalImpulse = m_records[index].normalImpulses[i];
+            p.tangentImpulse = m_records[index].tangentImpulses[i];
+        }
         loaded = loaded || p.normalImpulse > 0;
         approaching = approaching || p.startNormalVelocity < -constants::kRestingImpactThreshold;
     }
@@ -153,9 +166,6 @@ void ContactSolver::refreshConstraint(std::uint32_t index, std::span<SolverBody>
 
     // A batched step keeps its lanes, whose accumulated impulses are already the last pass's: only
     // the gaps change, and a circle's surface points and normal.
-    const std::uint32_t laneIndex = m_laneOf[index];
-    const std::size_t bi = laneIndex / kBatchLanes;
-    const auto lane = static_cast<int>(laneIndex % kBatchLanes);
     ContactBatch& batch = m_batches[bi];
     PositionBatch& positions = m_positionBatches[bi];
     for (std::size_t i = 0; i < static_cast<std::size_t>(c.pointCount); ++i) {

@@ -180,8 +180,11 @@ public:
     void solveVelocities(std::span<SolverBody> bodies);
     /// Ends the velocity passes: writes their impulses into this step's contact records (what the
     /// next step warm-starts from; see swapRecords) and marks the bodies that a contact force
-    /// acted on.
-    void finishVelocities(std::span<SolverBody> bodies);
+    /// acted on. `writeRecords` false: a batched step's later substeps keep the impulses in their
+    /// batch lanes, which refresh() reads, and only the substep that hands the records on (or a
+    /// ledger, which reads them every substep) writes them; the records are then not this
+    /// substep's until a later call writes them. An unbatched step always writes them.
+    void finishVelocities(std::span<SolverBody> bodies, bool writeRecords = true);
     /// Drops every accumulated contact-force impulse (warm start and passes alike), so that
     /// warmStart() then starts the passes cold. The bodies' velocities are the caller's to restore.
     void forgetImpulses();
@@ -274,8 +277,12 @@ private:
     /// manifold, the constraint itself, its record and the last step's matching record.
     void prefetchForBuild(std::uint32_t index, std::span<const PairManifold> manifolds,
                           const std::vector<model::ContactRecord>& previous) const;
-    /// Asks for the memory refreshConstraint(index) reads: the constraint, its record and lane.
+    /// Asks for the memory refreshConstraint(index) reads: the constraint, and its record (an
+    /// unbatched step) or its lane (a batched one).
     void prefetchForRefresh(std::uint32_t index) const;
+    /// Whether constraint ci has touched this step: its record says so, or (a batched step whose
+    /// records finishVelocities() has not written) a normal impulse of its lane did.
+    bool touching(std::uint32_t ci) const;
     /// Asks for what the build and the refresh read of a constraint's two bodies: the solver
     /// bodies, their derivatives and their rotations.
     void prefetchPairBodies(std::uint32_t bodyA, std::uint32_t bodyB, std::span<const SolverBody> bodies,
@@ -455,6 +462,10 @@ private:
     std::vector<std::uint32_t> m_batchLanes; ///< per lane of every batch: its constraint, or kNoConstraint
     std::array<std::size_t, 4> m_batchGroupStart{}; ///< where each group's batches start
     std::vector<PositionBatch> m_positionBatches; ///< the same lanes as m_batches, for the position passes
+    /// Per batch, the lanes (bit `lane`) that have carried a normal impulse at the end of a
+    /// substep's passes this step: what finishVelocities() ORs into the records' `touching` when
+    /// it writes them.
+    std::vector<std::uint8_t> m_touched;
     /// A batched step's passes do not work on the solver bodies but on copies of them, in slots
     /// laid out by half (assignSlots). The halves of a split world are cut by position, so in the
     /// bodies' own order the two threads' bodies alternate, and each thread's passes took 1.3 times

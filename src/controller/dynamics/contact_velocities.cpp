@@ -209,7 +209,7 @@ void ContactSolver::forgetImpulses()
     }
 }
 
-void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
+void ContactSolver::finishVelocities(std::span<SolverBody> bodies, bool writeRecords)
 {
     // The impulses go to the records alone, which is what the next step warm-starts from: the
     // constraints, seven cache lines each, are not read or written again.
@@ -227,15 +227,31 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
         }
         return;
     }
-    // The velocities go back to the bodies, each half's on its own thread (unless every pass has
-    // handed them back already). Each group writes its own records and marks its own movable
-    // bodies, so the halves of a split world can do this side by side too.
-    if (!m_sharedVelocities)
-        copyVelocitiesOut(bodies);
+    // Each group marks its own movable bodies and writes its own records, so the halves of a
+    // split world can do this side by side too. The lanes that carried a normal impulse are
+    // remembered for the records' `touching`, which the props read before the records are
+    // written.
     runGroups([&](int g) {
         const auto ug = static_cast<std::size_t>(g);
         const std::size_t end = m_batchGroupStart[ug + 1];
         for (std::size_t bi = m_batchGroupStart[ug]; bi < end; ++bi) {
+            const ContactBatch& batch = m_batches[bi];
+            for (int lane = 0; lane < kBatchLanes; ++lane) {
+                if (batch.points[0].normalImpulse[lane] > 0 || batch.points[1].normalImpulse[lane] > 0)
+                    m_touched[bi] = static_cast<std::uint8_t>(m_touched[bi] | (1U << lane));
+            }
+            if (!m_sharedVelocities) {
+                // The bodies' copies in the batch slots, next to the velocities they hand back
+                // below (a fixed body's lane writes to a scratch slot, which is not handed back).
+                for (int lane = 0; lane < kBatchLanes; ++lane) {
+                    if (batch.acted[lane] != 0) {
+                        batch.writeA[static_cast<std::size_t>(lane)]->contactForce = true;
+                        batch.writeB[static_cast<std::size_t>(lane)]->contactForce = true;
+                    }
+                }
+            }
+            if (!writeRecords && !m_sharedVelocities)
+                continue;
             // The records lie in the constraints' order, not the lanes': ask for those of a batch
             // a few ahead while this one's are written (one ahead was too late: the work on a
             // batch is short).
@@ -244,25 +260,44 @@ void ContactSolver::finishVelocities(std::span<SolverBody> bodies)
                 for (int lane = 0; lane < kBatchLanes; ++lane) {
                     const std::uint32_t next = m_batchLanes[ahead * kBatchLanes + static_cast<std::size_t>(lane)];
                     if (next != kNoConstraint) {
-                        __builtin_prefetch(&m_records[next], 1);
-                        __builtin_prefetch(&m_constraintBodies[next]);
+                        if (writeRecords)
+                            __builtin_prefetch(&m_records[next], 1);
+                        if (m_sharedVelocities)
+                            __builtin_prefetch(&m_constraintBodies[next]);
                     }
                 }
             }
-            const ContactBatch& batch = m_batches[bi];
             for (int lane = 0; lane < kBatchLanes; ++lane) {
                 const auto ul = static_cast<std::size_t>(lane);
                 const std::uint32_t ci = m_batchLanes[bi * kBatchLanes + ul];
                 if (ci == kNoConstraint)
                     continue;
-                model::ContactRecord& r = m_records[ci];
-                for (std::size_t i = 0; i < r.pointCount; ++i)
-                    finishRecord(r, i, batch.points[i].normalImpulse[lane], batch.points[i].tangentImpulse[lane]);
-                if (batch.acted[lane] != 0)
+                if (writeRecords) {
+                    model::ContactRecord& r = m_records[ci];
+                    for (std::size_t i = 0; i < r.pointCount; ++i)
+                        finishRecord(r, i, batch.points[i].normalImpulse[lane], batch.points[i].tangentImpulse[lane]);
+                    r.touching = r.touching || (m_touched[bi] >> lane & 1U) != 0;
+                }
+                // Every pass has handed the velocities back to the bodies already: mark them there.
+                if (m_sharedVelocities && batch.acted[lane] != 0)
                     markContactForce(bodies[m_constraintBodies[ci][0]], bodies[m_constraintBodies[ci][1]]);
             }
         }
     });
+    // The velocities and the marks go back to the bodies, each half's on its own thread (unless
+    // every pass has handed them back already).
+    if (!m_sharedVelocities)
+        copyVelocitiesOut(bodies);
+}
+
+bool ContactSolver::touching(std::uint32_t ci) const
+{
+    if (m_records[ci].touching)
+        return true;
+    if (!m_batched)
+        return false;
+    const std::uint32_t lane = m_laneOf[ci];
+    return (m_touched[lane / kBatchLanes] >> (lane % kBatchLanes) & 1U) != 0;
 }
 
 } // namespace impetus::controller
