@@ -1,5 +1,6 @@
 #include "controller/dynamics/joint_solver.h"
 
+#include "controller/dynamics/small_turn.h"
 #include "controller/union_find.h"
 #include "model/constants.h"
 
@@ -228,10 +229,51 @@ SolverBody& JointSolver::bodyOf(std::span<SolverBody> bodies, std::uint32_t inde
     return index == kWorld ? m_world : bodies[index];
 }
 
+void JointSolver::startRotations(std::size_t bodyCount)
+{
+    if (m_rotationStamps.size() != bodyCount || m_rotationStamp == UINT32_MAX) {
+        m_rotationStamps.assign(bodyCount, 0);
+        m_rotationAngles.resize(bodyCount);
+        m_rotations.resize(bodyCount);
+        m_rotationStamp = 0;
+    }
+    ++m_rotationStamp;
+}
+
+Vec2 JointSolver::rotated(const Vec2& local, std::span<const SolverBody> bodies, std::uint32_t index)
+{
+    if (index == kWorld)
+        return rotate(local, m_world.angle);
+    const Scalar angle = bodies[index].angle;
+    Vec2& rotation = m_rotations[index];
+    if (m_rotationStamps[index] != m_rotationStamp) {
+        m_rotationStamps[index] = m_rotationStamp;
+        m_rotationAngles[index] = angle;
+        rotation = Vec2(std::cos(angle), std::sin(angle));
+    } else if (const Scalar delta = angle - m_rotationAngles[index]; delta != 0) {
+        m_rotationAngles[index] = angle;
+        if (m_turnRotations && std::abs(delta) <= detail::kSmallTurn) {
+            Scalar c = rotation.x();
+            Scalar s = rotation.y();
+            detail::turnSmall(c, s, delta);
+            rotation = Vec2(c, s);
+        } else {
+            rotation = Vec2(std::cos(angle), std::sin(angle));
+        }
+    }
+    const Scalar c = rotation.x();
+    const Scalar s = rotation.y();
+    return Vec2(c * local.x() - s * local.y(), s * local.x() + c * local.y());
+}
+
 void JointSolver::prepare(const model::World& world, std::span<const SolverBody> bodies, Scalar h)
 {
     m_joints.clear();
     m_world = SolverBody{};
+    m_turnRotations = false; // until beginPositions() says
+    // The bodies do not move while the constraints are built: each body's cosine and sine once,
+    // the bits of rotate().
+    startRotations(bodies.size());
     for (const model::Joint& joint : world.joints) {
         Constraint c;
         c.type = joint.type;
@@ -243,8 +285,8 @@ void JointSolver::prepare(const model::World& world, std::span<const SolverBody>
         c.impulse = joint.impulse;
         const SolverBody& a = bodies[c.bodyA];
         const SolverBody& b = c.bodyB == kWorld ? m_world : bodies[c.bodyB];
-        c.rA = rotate(c.localA, a.angle);
-        c.rB = rotate(c.localB, b.angle);
+        c.rA = rotated(c.localA, bodies, c.bodyA);
+        c.rB = rotated(c.localB, bodies, c.bodyB);
         const Vec2 offset = b.position + c.rB - a.position - c.rA;
         // Impulses act from where each body is when they act: at the start, or after a struck
         // body's last impact (SolverBody::impulseOrigin).
@@ -513,8 +555,12 @@ void JointSolver::appendPositionRows(std::span<const SolverBody> bodies, std::ve
     }
 }
 
-void JointSolver::beginPositions()
+void JointSolver::beginPositions(std::size_t bodyCount, bool turnRotations)
 {
+    m_turnRotations = turnRotations;
+    // The bodies have moved since prepare(): their cosines and sines afresh at first use, then
+    // turned with them through the passes.
+    startRotations(bodyCount);
     for (Constraint& c : m_joints)
         c.push = Vec2::Zero();
 }
@@ -558,8 +604,8 @@ bool JointSolver::solvePositions(std::span<SolverBody> bodies)
         }
         SolverBody& a = bodyOf(bodies, c.bodyA);
         SolverBody& b = bodyOf(bodies, c.bodyB);
-        const Vec2 rA = rotate(c.localA, a.angle);
-        const Vec2 rB = rotate(c.localB, b.angle);
+        const Vec2 rA = rotated(c.localA, bodies, c.bodyA);
+        const Vec2 rB = rotated(c.localB, bodies, c.bodyB);
         const Vec2 d = b.position + rB - a.position - rA;
         if (c.type == model::JointType::Pin) {
             worst = std::max(worst, d.norm());
@@ -605,8 +651,8 @@ Scalar JointSolver::solveBlockPositions(const PinBlock& block, std::span<SolverB
         const Constraint& c = m_joints[block.pins[static_cast<std::size_t>(k)]];
         const SolverBody& a = bodyOf(bodies, c.bodyA);
         const SolverBody& b = bodyOf(bodies, c.bodyB);
-        const Vec2 rA = rotate(c.localA, a.angle);
-        const Vec2 rB = rotate(c.localB, b.angle);
+        const Vec2 rA = rotated(c.localA, bodies, c.bodyA);
+        const Vec2 rB = rotated(c.localB, bodies, c.bodyB);
         const Vec2 d = b.position + rB - a.position - rA;
         error.segment<2>(2 * k) = d;
         worst = std::max(worst, d.norm());
