@@ -187,6 +187,8 @@ int spinSubsteps(const model::World& world, Scalar h)
     Scalar turns = fastest * h / (unlike && driven ? kMaxUnlikeMassTurnPerSubstep : kMaxTurnPerSubstep);
     if (unlike && !driven) {
         for (const model::ContactRecord& contact : world.contacts) {
+            if (contact.bodyA.index >= world.bodies.size() || contact.bodyB.index >= world.bodies.size())
+                continue; // a record of bodies that are gone (the editor renumbers them; kept safe)
             const model::Body& a = world.body(contact.bodyA);
             const model::Body& b = world.body(contact.bodyB);
             if (a.fixed || b.fixed)
