@@ -62,21 +62,8 @@ void ContactSolver::turnRotations(std::span<const SolverBody> bodies, bool split
     // Between the substeps of a step a body turns by ω·h: a few thousandths of a radian in a
     // pile, where std::cos and std::sin of every body's angle cost as much as a position pass.
     inHalves(split ? m_tasks : nullptr, bodies.size(), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            const Scalar angle = bodies[i].angle;
-            const Scalar delta = angle - m_rotationAngles[i];
-            if (delta == 0)
-                continue; // at rest, or fixed
-            if (std::abs(delta) <= detail::kSmallTurn) {
-                Scalar cosine = m_rotations[i].x();
-                Scalar sine = m_rotations[i].y();
-                detail::turnSmall(cosine, sine, delta);
-                m_rotations[i] = Vec2(cosine, sine);
-            } else {
-                m_rotations[i] = Vec2(std::cos(angle), std::sin(angle)); // a NaN angle lands here too
-            }
-            m_rotationAngles[i] = angle;
-        }
+        for (std::size_t i = begin; i < end; ++i)
+            detail::turnTo(m_rotations[i], m_rotationAngles[i], bodies[i].angle); // nothing at rest
     });
 }
 

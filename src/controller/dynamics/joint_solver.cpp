@@ -250,16 +250,8 @@ Vec2 JointSolver::rotated(const Vec2& local, std::span<const SolverBody> bodies,
         m_rotationStamps[index] = m_rotationStamp;
         m_rotationAngles[index] = angle;
         rotation = Vec2(std::cos(angle), std::sin(angle));
-    } else if (const Scalar delta = angle - m_rotationAngles[index]; delta != 0) {
-        m_rotationAngles[index] = angle;
-        if (m_turnRotations && std::abs(delta) <= detail::kSmallTurn) {
-            Scalar c = rotation.x();
-            Scalar s = rotation.y();
-            detail::turnSmall(c, s, delta);
-            rotation = Vec2(c, s);
-        } else {
-            rotation = Vec2(std::cos(angle), std::sin(angle));
-        }
+    } else {
+        detail::turnTo(rotation, m_rotationAngles[index], angle, m_turnRotations);
     }
     const Scalar c = rotation.x();
     const Scalar s = rotation.y();

@@ -6,6 +6,8 @@
 
 #include "model/scalar.h"
 
+#include <cmath>
+
 namespace impetus::controller::detail {
 
 /// Below this turn (rad) the cosine and sine are updated by the angle-sum formulas with Taylor
@@ -37,6 +39,25 @@ template <class T>
     const T turnedSine = sine * cosDelta + cosine * sinDelta;
     cosine = turnedCosine;
     sine = turnedSine;
+}
+
+/// Brings `rotation`, the cosine and sine of `turnedAngle`, to `angle`: by the turn between them
+/// where it is small (≤ kSmallTurn) and `small` allows, else with std::cos and std::sin of
+/// `angle` (a NaN angle lands there too); nothing where the angle has not changed.
+inline void turnTo(Vec2& rotation, Scalar& turnedAngle, Scalar angle, bool small = true)
+{
+    const Scalar delta = angle - turnedAngle;
+    if (delta == 0)
+        return;
+    if (small && std::abs(delta) <= kSmallTurn) {
+        Scalar cosine = rotation.x();
+        Scalar sine = rotation.y();
+        turnSmall(cosine, sine, delta);
+        rotation = Vec2(cosine, sine);
+    } else {
+        rotation = Vec2(std::cos(angle), std::sin(angle));
+    }
+    turnedAngle = angle;
 }
 
 } // namespace impetus::controller::detail
