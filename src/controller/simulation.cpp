@@ -228,6 +228,7 @@ Simulation::Simulation(SolverSettings settings)
 {
     m_contactSolver.useTasks(m_tasks.get());
     m_contactSolver.setBatchMinConstraints(settings.batchMinConstraints);
+    m_contactSolver.setImpactReachBounds(settings.impactReachBounds);
 }
 
 void Simulation::setLedger(EnergyLedger* ledger)
@@ -848,6 +849,8 @@ void Simulation::substep(model::World& world, Scalar h, Scalar step, Scalar endT
     if (m_ledger)
         m_ledger->beforeImpacts(m_bodies);
     m_profile.impacts += m_contactSolver.solveImpacts(m_bodies, h);
+    m_profile.impactVisits += m_contactSolver.impactVisits();
+    m_profile.impactLooks += m_contactSolver.impactLooks();
     // After the impacts: a struck body's joint impulses act from where it is after its last one.
     m_jointSolver.prepare(world, m_bodies, h);
     if (m_ledger)

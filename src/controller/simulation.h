@@ -43,6 +43,11 @@ struct StepProfile {
     /// 0 in a step that is not batched. Summed over substeps, as contacts.
     int batchLanes = 0;
     int impacts = 0; ///< impacts resolved
+    /// The contacts the impact pass looked at again after its impacts, summed over the substeps
+    /// (ContactSolver::impactVisits).
+    std::size_t impactVisits = 0;
+    /// Those of impactVisits the impact pass looked at in full, not ruled out by its bounds.
+    std::size_t impactLooks = 0;
     int substeps = 0; ///< substeps the step was split into (solverSubsteps, soft grids)
     /// Islands of unlike masses whose velocities were solved whole (UnlikeMassIslands), summed
     /// over the substeps.
@@ -70,6 +75,10 @@ struct SolverSettings {
     /// The longest substep the solvers take, s: a longer world step is split into equal substeps
     /// (solverSubsteps). Tests set it to the world step to see one unsplit step.
     Scalar maxSubstep = constants::kMaxSolverStep;
+    /// The impact pass rules out from bounds the contacts of a struck body that cannot meet within
+    /// the step before looking at them in full (ContactSolver::setImpactReachBounds). The same
+    /// bits either way; tests set false to compare.
+    bool impactReachBounds = true;
 };
 
 /// The equal substeps a step of h seconds is split into so that none is longer than maxSubstep:

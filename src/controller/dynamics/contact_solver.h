@@ -34,6 +34,24 @@
 
 namespace impetus::controller {
 
+namespace detail {
+
+/// What the impact pass needs to rule out a contact's impact from bounds alone (staysOpen in
+/// contact_impacts.cpp), kept per entry of a body's list of constraints, so that looking again at
+/// a struck body's contacts reads one run of memory instead of each constraint's lines. Filled for
+/// a body's entries the first time it is struck in a step.
+struct ImpactReach {
+    std::uint32_t bodyA = 0;
+    std::uint32_t bodyB = 0;
+    Vec2 normal = Vec2::Zero();
+    Scalar shift = 0; ///< least (sB − sA)·n over the points, s the unturned surface arms, m
+    Scalar armA = 0; ///< largest |sA|₁ over the points, m
+    Scalar armB = 0; ///< largest |sB|₁ over the points, m
+    Scalar acceleration = 0; ///< least relative normal acceleration over the points, m/s²
+};
+
+} // namespace detail
+
 /// One point of a contact constraint.
 struct ContactConstraintPoint {
     Vec2 point = Vec2::Zero(); ///< the contact point (for an impact, where it struck), world, m
@@ -164,6 +182,15 @@ public:
     /// Appends a record of every impact solveImpacts() resolves to `log` (impact_record.h), or
     /// records nothing (nullptr, the default). The caller keeps `log` alive.
     void setImpactLog(std::vector<ImpactRecord>* log) { m_impactLog = log; }
+    /// Whether the impact pass rules out from bounds the contacts of a struck body that cannot meet
+    /// within the step (staysOpen in contact_impacts.cpp), before looking at them in full: the
+    /// same impacts in the same order either way, to the bit. On unless set; tests compare.
+    void setImpactReachBounds(bool on) { m_impactReachBounds = on; }
+    /// The contacts the last solveImpacts looked at again after its impacts (what its budget,
+    /// kMaxImpactVisitsPerContact, counts).
+    std::size_t impactVisits() const { return m_impactVisits; }
+    /// Those of impactVisits() it looked at in full, not ruled out by the bounds.
+    std::size_t impactLooks() const { return m_impactLooks; }
     /// Whether this step's velocity passes run in batches.
     bool batched() const { return m_batched; }
     /// The lanes of this step's batches, padding included (0 when it is not batched): each colour
@@ -443,6 +470,15 @@ private:
     std::vector<std::uint32_t> m_bodyConstraintStart; ///< per body: start in m_bodyConstraints
     std::vector<std::uint32_t> m_bodyConstraints; ///< constraint indices, grouped by body
     std::vector<std::uint32_t> m_bodyConstraintFill;
+    /// What the impact pass needs to rule out a contact's impact from bounds alone, per entry of
+    /// m_bodyConstraints and beside it (detail::ImpactReach).
+    std::vector<detail::ImpactReach> m_bodyConstraintReach;
+    bool m_impactReachBounds = true;
+    std::size_t m_impactVisits = 0;
+    std::size_t m_impactLooks = 0;
+    std::vector<std::uint8_t> m_reachReady; ///< per body: its entries of m_bodyConstraintReach are filled
+    /// Fills body `body`'s entries of m_bodyConstraintReach.
+    void fillImpactReach(std::uint32_t body);
     /// Constraint indices in solving order: half 0, half 1, then those joining the halves.
     std::array<std::vector<std::uint32_t>, 3> m_groups;
     bool m_split = false; ///< groups 0 and 1 run on two threads
