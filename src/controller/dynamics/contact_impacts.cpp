@@ -378,8 +378,10 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
         for (std::size_t i = 0; i < bodies.size(); ++i)
             m_bodyConstraintStart[i + 1] += m_bodyConstraintStart[i];
         m_bodyConstraints.resize(m_bodyConstraintStart.back());
-        m_bodyConstraintReach.resize(m_bodyConstraints.size());
-        m_reachReady.assign(bodies.size(), 0);
+        if (m_impactReachBounds) {
+            m_bodyConstraintReach.resize(m_bodyConstraints.size());
+            m_reachReady.assign(bodies.size(), 0);
+        }
         std::vector<std::uint32_t>& fill = m_bodyConstraintFill;
         fill.assign(m_bodyConstraintStart.begin(), m_bodyConstraintStart.end() - 1);
         for (std::uint32_t ci = 0; ci < m_constraints.size(); ++ci) {
@@ -590,12 +592,15 @@ int ContactSolver::solveImpacts(std::span<SolverBody> bodies, Scalar h)
             for (std::uint32_t at = m_bodyConstraintStart[body]; at < m_bodyConstraintStart[body + 1]; ++at) {
                 const std::uint32_t cj = m_bodyConstraints[at];
                 ++m_versions[cj];
-                // The body was just struck, so approachOf measures every point from τ₀, the
-                // later of the two bodies' last impacts.
-                const detail::ImpactReach& reach = m_bodyConstraintReach[at];
-                const Scalar tau0 = std::max(bodies[reach.bodyA].lastImpactTau, bodies[reach.bodyB].lastImpactTau);
-                if (m_impactReachBounds && staysOpen(reach, bodies, tau0, h, *this))
-                    continue;
+                if (m_impactReachBounds) {
+                    // The body was just struck, so approachOf measures every point from τ₀, the
+                    // later of the two bodies' last impacts. (The entries are filled only where
+                    // the bounds are on.)
+                    const detail::ImpactReach& reach = m_bodyConstraintReach[at];
+                    const Scalar tau0 = std::max(bodies[reach.bodyA].lastImpactTau, bodies[reach.bodyB].lastImpactTau);
+                    if (staysOpen(reach, bodies, tau0, h, *this))
+                        continue;
+                }
                 ++m_impactLooks;
                 consider(cj);
             }
